@@ -1,0 +1,37 @@
+#pragma once
+/// \file
+/// The reference structure: every ray against every primitive.
+
+#include "raylab/accel/accelerator.h"
+#include "raylab/geometry/geometry.h"
+
+namespace raylab {
+
+/// Tests every primitive for every ray. Slow and obviously correct: the reference every other
+/// structure is checked against.
+class BruteForce final : public Accelerator {
+ public:
+  /// Keeps a reference to `geometry`, which must outlive this object.
+  explicit BruteForce(const Geometry& geometry);
+
+  Box3 bounds() const override { return m_bounds; }
+  bool intersect(Ray& ray, Hit& hit) const override;
+  bool occluded(const Ray& ray) const override;
+  bool intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const override;
+  bool occluded_counted(const Ray& ray, TraversalStats& stats) const override;
+  using Accelerator::intersect;
+  using Accelerator::occluded;
+  AccelInfo info() const override;
+
+ private:
+  template <bool kCount>
+  bool intersect_impl(Ray& ray, Hit& hit, TraversalStats* stats) const;
+  template <bool kCount>
+  bool occluded_impl(const Ray& ray, TraversalStats* stats) const;
+
+  const Geometry& m_geometry;
+  Box3 m_bounds;
+  double m_build_seconds = 0.0;
+};
+
+}  // namespace raylab

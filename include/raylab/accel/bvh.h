@@ -1,0 +1,88 @@
+#pragma once
+/// \file
+/// Binary bounding volume hierarchy: flattened 32-byte nodes, SAH-built, distance-ordered traversal.
+
+#include <cstdint>
+#include <vector>
+
+#include "raylab/accel/accelerator.h"
+#include "raylab/geometry/geometry.h"
+
+namespace raylab {
+
+/// Build parameters of the BVH, with the defaults used by `--accel bvh`.
+struct BvhConfig {
+  int bin_count = 16;            ///< SAH bins per axis (binned build, Wald 2007)
+  int max_leaf_size = 8;         ///< a node with more primitives is always split if it can be
+  float traversal_cost = 1.0f;   ///< SAH cost of visiting a node, relative to one primitive test
+  float intersection_cost = 1.0f;///< SAH cost of one primitive test
+  int parallel_threshold = 4096; ///< subtrees with at least this many primitives build in parallel
+};
+
+/// One node, 32 bytes so two siblings share a 64-byte cache line:
+///   bytes  0-11  box minimum (3 x float)
+///   bytes 12-15  interior: index of the left child (the right child follows it);
+///                leaf: index of the first primitive reference
+///   bytes 16-27  box maximum (3 x float)
+///   bytes 28-31  number of primitives; 0 marks an interior node
+struct BvhNode {
+  float lo[3];
+  std::uint32_t first;
+  float hi[3];
+  std::uint32_t count;
+
+  /// True for a leaf.
+  bool is_leaf() const { return count != 0; }
+};
+static_assert(sizeof(BvhNode) == 32, "BvhNode must stay 32 bytes");
+
+/// The tree as plain data, produced by `build_bvh` and walked by the `Bvh` accelerator.
+struct BvhTree {
+  std::vector<BvhNode> nodes;            ///< root at index 0
+  std::vector<std::uint32_t> prim_ids;   ///< primitive references, leaf by leaf
+  int max_depth = 0;                     ///< depth of the deepest leaf (root = 0)
+  std::size_t leaf_count = 0;            ///< number of leaves
+};
+
+/// Builds a BVH over every primitive of `geometry` with the binned SAH, in parallel on oneTBB.
+BvhTree build_bvh(const Geometry& geometry, const BvhConfig& config = {});
+
+/// SAH cost of a tree (traversal cost per interior node and intersection cost per primitive,
+/// weighted by surface area relative to the root): used to compare builds.
+double sah_cost(const BvhTree& tree, const BvhConfig& config = {});
+
+/// The BVH accelerator. Triangles referenced by leaves are copied in leaf order, so a leaf's
+/// triangles are contiguous in memory; other shapes are tested through the Geometry.
+class Bvh final : public Accelerator {
+ public:
+  /// Builds the tree; keeps a reference to `geometry`, which must outlive this object.
+  explicit Bvh(const Geometry& geometry, const BvhConfig& config = {});
+
+  Box3 bounds() const override;
+  bool intersect(Ray& ray, Hit& hit) const override;
+  bool occluded(const Ray& ray) const override;
+  bool intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const override;
+  bool occluded_counted(const Ray& ray, TraversalStats& stats) const override;
+  using Accelerator::intersect;
+  using Accelerator::occluded;
+  AccelInfo info() const override;
+
+  /// The tree, for tests and tools.
+  const BvhTree& tree() const { return m_tree; }
+
+ private:
+  template <bool kCount>
+  bool intersect_impl(Ray& ray, Hit& hit, TraversalStats* stats) const;
+  template <bool kCount>
+  bool occluded_impl(const Ray& ray, TraversalStats* stats) const;
+  template <bool kAnyHit, bool kCount>
+  bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
+
+  const Geometry& m_geometry;
+  BvhTree m_tree;
+  std::vector<Triangle> m_leaf_triangles;  ///< parallel to prim_ids; unused slots for non-triangles
+  std::uint32_t m_triangle_count = 0;      ///< prim ids below this are triangles
+  double m_build_seconds = 0.0;
+};
+
+}  // namespace raylab

@@ -1,0 +1,30 @@
+#pragma once
+/// \file
+/// Open cylinders and truncated cones, as NFF's `c` primitive defines them.
+
+#include "raylab/core/box.h"
+#include "raylab/core/ray.h"
+
+namespace raylab {
+
+/// An open (capless) cone frustum from `base` with `base_radius` to `apex` with `apex_radius`;
+/// a cylinder when the radii are equal (32 bytes).
+struct Cylinder {
+  Vec3 base;
+  float base_radius = 1.f;
+  Vec3 apex;
+  float apex_radius = 1.f;
+};
+
+/// Closest hit of `ray` with the lateral surface of `cyl` in [tmin, tmax). The quadratic is
+/// solved in double precision: cones are few, and grazing rays need the accuracy.
+/// On a hit, `t` is set and `height` is the fraction 0..1 from base to apex.
+bool intersect_cylinder(const Cylinder& cyl, const Ray& ray, float tmin, float tmax, float& t, float& height);
+
+/// Outward unit normal of the lateral surface at point `p`.
+Vec3 cylinder_normal(const Cylinder& cyl, Vec3 p);
+
+/// Bounding box of a cone frustum (exact: the extent of each end disk, per axis).
+Box3 cylinder_bounds(const Cylinder& cyl);
+
+}  // namespace raylab

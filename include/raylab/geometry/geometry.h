@@ -1,0 +1,78 @@
+#pragma once
+/// \file
+/// All primitives of a scene in flat arrays, with one global primitive index space.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "raylab/core/box.h"
+#include "raylab/core/ray.h"
+#include "raylab/geometry/cylinder.h"
+#include "raylab/geometry/planar.h"
+#include "raylab/geometry/sphere.h"
+#include "raylab/geometry/triangle.h"
+
+namespace raylab {
+
+/// The kinds of primitive, in the order their ranges appear in the global index space.
+enum class ShapeKind : std::uint8_t { kTriangle = 0, kSphere, kCylinder, kDisk, kQuad };
+
+/// A global primitive index resolved to its kind and its index within that kind's array.
+struct ShapeRef {
+  ShapeKind kind;
+  std::uint32_t index;
+};
+
+/// Plain data: the scene's primitives, one array per kind, each primitive tagged with the object
+/// it belongs to. Global primitive ids number triangles first, then spheres, cylinders, disks and
+/// quads, so that for a scene of one mesh the id is the triangle's index in file order.
+/// Arrays may be appended to freely until an accelerator is built over the geometry; after that
+/// the accelerator refers to it and it must not change.
+struct Geometry {
+  std::vector<Triangle> triangles;
+  std::vector<Sphere> spheres;
+  std::vector<Cylinder> cylinders;
+  std::vector<Disk> disks;
+  std::vector<Quad> quads;
+
+  /// Object id of each primitive, one array per kind, parallel to the shape arrays.
+  std::vector<std::uint32_t> triangle_objects, sphere_objects, cylinder_objects, disk_objects, quad_objects;
+
+  /// Per-vertex shading normals of each triangle; empty, or parallel to `triangles`. A zero
+  /// normal means "use the geometric normal" for that triangle.
+  std::vector<std::array<Vec3, 3>> triangle_normals;
+
+  /// Appends a triangle of object `object`; returns its global id.
+  std::uint32_t add(const Triangle& t, std::uint32_t object);
+  /// Appends a triangle with per-vertex shading normals.
+  std::uint32_t add(const Triangle& t, const std::array<Vec3, 3>& normals, std::uint32_t object);
+  /// Appends a sphere.
+  void add(const Sphere& s, std::uint32_t object);
+  /// Appends a cylinder or cone.
+  void add(const Cylinder& c, std::uint32_t object);
+  /// Appends a disk.
+  void add(const Disk& d, std::uint32_t object);
+  /// Appends a quad.
+  void add(const Quad& q, std::uint32_t object);
+
+  /// Total number of primitives.
+  std::uint32_t size() const {
+    return static_cast<std::uint32_t>(triangles.size() + spheres.size() + cylinders.size() + disks.size() +
+                                      quads.size());
+  }
+  /// Resolves a global id (must be < size()) to kind and local index.
+  ShapeRef resolve(std::uint32_t prim_id) const;
+  /// Bounding box of primitive `prim_id`.
+  Box3 bounds(std::uint32_t prim_id) const;
+  /// Bounding box of all primitives.
+  Box3 bounds() const;
+  /// Object id of primitive `prim_id`.
+  std::uint32_t object_of(std::uint32_t prim_id) const;
+
+  /// Tests primitive `prim_id` against `ray` in [ray.tmin, ray.tmax). On a hit, shrinks
+  /// `ray.tmax`, fills `hit` and returns true. `wr` must be WatertightRay(ray).
+  bool intersect(std::uint32_t prim_id, const WatertightRay& wr, Ray& ray, Hit& hit) const;
+};
+
+}  // namespace raylab

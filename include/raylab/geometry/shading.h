@@ -1,0 +1,33 @@
+#pragma once
+/// \file
+/// Surface data at a hit, computed once the closest hit is known (never during traversal).
+
+#include <cstdint>
+
+#include "raylab/core/ray.h"
+#include "raylab/geometry/geometry.h"
+
+namespace raylab {
+
+/// What shading needs to know about a hit point.
+struct SurfaceInteraction {
+  Vec3 position;         ///< hit point
+  Vec3 geometric_normal; ///< unit normal of the surface, facing the incoming ray
+  Vec3 shading_normal;   ///< unit interpolated normal, on the same side as geometric_normal
+  float u = 0.f;         ///< surface coordinate (texture space), shape-dependent
+  float v = 0.f;         ///< surface coordinate (texture space), shape-dependent
+  bool front_face = true;  ///< true when the ray hit the side the shape's own normal points to
+  std::uint32_t object_id = kInvalidId;  ///< object the primitive belongs to
+};
+
+/// Computes position, normals and surface coordinates for `hit` on `ray`.
+SurfaceInteraction surface_at(const Geometry& geometry, const Ray& ray, const Hit& hit);
+
+/// Offset along the normal that moves a spawned ray's origin off the surface: relative to the
+/// magnitude of the position so that scenes at any scale are handled (float ulp ~ 1.2e-7).
+float surface_offset(Vec3 position);
+
+/// Origin for a ray leaving the surface at `p` towards the side of `n` that `dir` points to.
+Vec3 offset_origin(Vec3 p, Vec3 n, Vec3 dir);
+
+}  // namespace raylab

@@ -1,0 +1,43 @@
+#pragma once
+/// \file
+/// Ray-sphere intersection.
+
+#include <cmath>
+
+#include "raylab/core/box.h"
+#include "raylab/core/ray.h"
+
+namespace raylab {
+
+/// A sphere by centre and radius (16 bytes).
+struct Sphere {
+  Vec3 center;
+  float radius = 1.f;
+};
+
+/// Closest hit of `ray` with `s` inside [tmin, tmax); rays starting inside hit the far side.
+/// Uses the numerically careful form of Haines et al. (Ray Tracing Gems, ch. 7): the
+/// discriminant from the distance of the centre to the ray line, and no cancellation in the
+/// nearer root.
+inline bool intersect_sphere(const Sphere& s, const Ray& ray, float tmin, float tmax, float& t) {
+  const Vec3 f = ray.origin - s.center;
+  const Vec3 d = ray.direction;
+  const float a = dot(d, d);
+  const float b = dot(f, d);  // half of the usual b
+  const float c = dot(f, f) - s.radius * s.radius;
+  const Vec3 l = f - d * (b / a);  // foot of the perpendicular from the centre, relative to it
+  const float disc = a * (s.radius * s.radius - dot(l, l));
+  if (!(disc >= 0.f)) return false;
+  const float q = -b - std::copysign(std::sqrt(disc), b);
+  float t0 = c / q;
+  float t1 = q / a;
+  if (t0 > t1) std::swap(t0, t1);
+  if (t0 >= tmin && t0 < tmax) { t = t0; return true; }
+  if (t1 >= tmin && t1 < tmax) { t = t1; return true; }
+  return false;
+}
+
+/// Bounding box of a sphere.
+inline Box3 sphere_bounds(const Sphere& s) { return {s.center - Vec3(s.radius), s.center + Vec3(s.radius)}; }
+
+}  // namespace raylab

@@ -1,0 +1,83 @@
+#pragma once
+/// \file
+/// Watertight ray-triangle intersection (Woop, Benthin & Wald, JCGT 2013).
+
+#include <cmath>
+#include <utility>
+
+#include "raylab/core/ray.h"
+
+namespace raylab {
+
+/// A triangle by its three vertices (36 bytes). Winding p0 -> p1 -> p2 gives the geometric
+/// normal cross(p1 - p0, p2 - p0); both sides are hit (no culling).
+struct Triangle {
+  Vec3 p0, p1, p2;
+};
+
+/// Per-ray constants of the watertight test, computed once per ray and reused for every
+/// triangle: the axis permutation that makes the dominant direction component z, and the shear
+/// that maps the ray onto the +z axis.
+struct WatertightRay {
+  Vec3 origin;
+  int kx = 0, ky = 1, kz = 2;
+  float sx = 0.f, sy = 0.f, sz = 1.f;
+
+  WatertightRay() = default;
+  /// Prepares the constants for `ray`.
+  explicit WatertightRay(const Ray& ray) : origin(ray.origin) {
+    const Vec3 d = ray.direction;
+    const Vec3 ad = abs(d);
+    kz = max_axis(ad);
+    kx = kz == 2 ? 0 : kz + 1;
+    ky = kx == 2 ? 0 : kx + 1;
+    if (d[kz] < 0.f) std::swap(kx, ky);  // keeps the winding, so the sign of det is meaningful
+    sz = 1.f / d[kz];
+    sx = d[kx] * sz;
+    sy = d[ky] * sz;
+  }
+};
+
+/// Tests `tri` against the ray described by `wr`, accepting hits with tmin <= t < tmax.
+/// Watertight: a ray through an edge or vertex shared by two triangles hits at least one of them
+/// (edge functions that round to zero are recomputed in double precision). On a hit writes `t`
+/// and the barycentric weights `u` (of p1) and `v` (of p2).
+inline bool intersect_triangle(const Triangle& tri, const WatertightRay& wr, float tmin, float tmax,
+                               float& t, float& u, float& v) {
+  const Vec3 a = tri.p0 - wr.origin;
+  const Vec3 b = tri.p1 - wr.origin;
+  const Vec3 c = tri.p2 - wr.origin;
+  const float ax = a[wr.kx] - wr.sx * a[wr.kz];
+  const float ay = a[wr.ky] - wr.sy * a[wr.kz];
+  const float bx = b[wr.kx] - wr.sx * b[wr.kz];
+  const float by = b[wr.ky] - wr.sy * b[wr.kz];
+  const float cx = c[wr.kx] - wr.sx * c[wr.kz];
+  const float cy = c[wr.ky] - wr.sy * c[wr.kz];
+  float e0 = cx * by - cy * bx;  // weight of p0
+  float e1 = ax * cy - ay * cx;  // weight of p1
+  float e2 = bx * ay - by * ax;  // weight of p2
+  if (e0 == 0.f || e1 == 0.f || e2 == 0.f) {
+    // On (or within rounding of) an edge: decide in double so both neighbours agree.
+    e0 = static_cast<float>(double(cx) * double(by) - double(cy) * double(bx));
+    e1 = static_cast<float>(double(ax) * double(cy) - double(ay) * double(cx));
+    e2 = static_cast<float>(double(bx) * double(ay) - double(by) * double(ax));
+  }
+  if ((e0 < 0.f || e1 < 0.f || e2 < 0.f) && (e0 > 0.f || e1 > 0.f || e2 > 0.f)) return false;
+  const float det = e0 + e1 + e2;
+  if (det == 0.f) return false;
+  const float az = wr.sz * a[wr.kz];
+  const float bz = wr.sz * b[wr.kz];
+  const float cz = wr.sz * c[wr.kz];
+  const float rcp = 1.f / det;
+  const float th = (e0 * az + e1 * bz + e2 * cz) * rcp;
+  if (!(th >= tmin && th < tmax)) return false;  // also rejects NaN
+  t = th;
+  u = e1 * rcp;
+  v = e2 * rcp;
+  return true;
+}
+
+/// Unnormalised geometric normal of `tri` (its length is twice the area).
+inline Vec3 triangle_normal(const Triangle& tri) { return cross(tri.p1 - tri.p0, tri.p2 - tri.p0); }
+
+}  // namespace raylab

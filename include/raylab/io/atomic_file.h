@@ -1,0 +1,19 @@
+#pragma once
+/// \file
+/// Writing files so that a reader never sees half of one.
+
+#include <span>
+#include <string>
+
+namespace raylab {
+
+/// Writes `bytes` to `path` atomically: to a temporary file in the same folder, flushed to disk,
+/// then renamed over `path`. On failure the temporary is removed, any previous `path` is left
+/// untouched, and InputError says why (missing folder, no permission, disk full).
+void write_file_atomically(const std::string& path, std::span<const unsigned char> bytes);
+
+/// Fails early, with the same InputError a write would give, when `path` cannot be written
+/// (its folder is missing or not writable). Creates nothing.
+void check_writable(const std::string& path);
+
+}  // namespace raylab

@@ -1,0 +1,28 @@
+#pragma once
+/// \file
+/// Pinhole camera: maps image positions to primary rays.
+
+#include "raylab/core/ray.h"
+#include "raylab/scene/camera_spec.h"
+
+namespace raylab {
+
+/// A pinhole camera for an image of a given size. Image coordinates are continuous pixel units:
+/// (0, 0) is the top-left corner of the top-left pixel, (width, height) the bottom-right corner.
+class Camera {
+ public:
+  /// Builds the camera frame from `spec` for a `width` x `height` image.
+  Camera(const CameraSpec& spec, int width, int height);
+
+  /// The primary ray through image position (x, y). Its direction is not normalised: it points
+  /// at the image plane at unit distance, so t measures distance along the view axis.
+  Ray generate(float x, float y) const;
+
+ private:
+  Vec3 m_origin;
+  Vec3 m_top_left;  ///< image plane point of image position (0, 0)
+  Vec3 m_dx;        ///< image plane step of one pixel to the right
+  Vec3 m_dy;        ///< image plane step of one pixel down
+};
+
+}  // namespace raylab

@@ -1,0 +1,33 @@
+#pragma once
+/// \file
+/// The tile-parallel render loop.
+
+#include <functional>
+
+#include "raylab/accel/accelerator.h"
+#include "raylab/core/stats.h"
+#include "raylab/render/film.h"
+#include "raylab/scene/scene.h"
+
+namespace raylab {
+
+/// How to run a render (settings of the image itself live in Scene::settings).
+struct RenderOptions {
+  int threads = 0;               ///< worker threads; 0 = all cores
+  int tile_size = 16;            ///< square tiles of this many pixels per side
+  bool count_traversal = false;  ///< count nodes and primitive tests (slower); see RenderStats
+  /// Called from one thread with (tiles done, tiles total) as tiles finish; may be empty.
+  std::function<void(int, int)> on_progress;
+};
+
+/// What a finished render reports.
+struct RenderResult {
+  RenderStats stats;
+  double seconds = 0.0;  ///< wall-clock time of the pixel loop
+};
+
+/// Renders `scene` with `accel` into `film` (which must match the settings' size). The image is
+/// the same for any thread count and tile order: every sample is seeded by its pixel and index.
+RenderResult render(const Scene& scene, const Accelerator& accel, Film& film, const RenderOptions& options = {});
+
+}  // namespace raylab

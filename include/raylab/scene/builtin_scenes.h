@@ -1,0 +1,25 @@
+#pragma once
+/// \file
+/// Scenes built into raylab, addressed by name.
+
+#include <span>
+#include <string_view>
+
+#include "raylab/scene/scene.h"
+
+namespace raylab {
+
+/// Names of the built-in scenes.
+std::span<const std::string_view> builtin_scene_names();
+
+/// True when `name` is a built-in scene.
+bool is_builtin_scene(std::string_view name);
+
+/// Builds the built-in scene `name`; throws UsageError listing the names when unknown.
+Scene make_builtin_scene(std::string_view name);
+
+/// The demo: Whitted's classic image revisited. A checkered floor, a mirror sphere, a glass
+/// sphere, a Phong-shaded sphere, a smooth torus mesh, two point lights and a quad area light.
+Scene make_demo_scene();
+
+}  // namespace raylab

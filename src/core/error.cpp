@@ -1,0 +1,25 @@
+#include "raylab/core/error.h"
+
+namespace raylab {
+namespace {
+
+// "file:line:col: message", dropping the parts that are unknown.
+std::string format_input_error(const std::string& file, int line, int col, const std::string& message) {
+  std::string out = file;
+  if (line > 0) {
+    out += ':' + std::to_string(line);
+    if (col > 0) out += ':' + std::to_string(col);
+  }
+  if (!out.empty()) out += ": ";
+  return out + message;
+}
+
+}  // namespace
+
+InputError::InputError(std::string file, int line, int col, const std::string& message)
+    : std::runtime_error(format_input_error(file, line, col, message)),
+      m_file(std::move(file)),
+      m_line(line),
+      m_col(col) {}
+
+}  // namespace raylab

@@ -1,0 +1,86 @@
+#include "raylab/geometry/cylinder.h"
+
+#include <cmath>
+
+namespace raylab {
+
+bool intersect_cylinder(const Cylinder& cyl, const Ray& ray, float tmin, float tmax, float& t, float& height) {
+  // Frame along the axis: s = height above the base, q = radial offset. The surface is
+  // |q(t)| = r0 + k s(t), with k the radius change per unit height.
+  const Vec3 axis = cyl.apex - cyl.base;
+  const double h = std::sqrt(double(dot(axis, axis)));
+  if (h == 0.0) return false;
+  const double wx = axis.x / h, wy = axis.y / h, wz = axis.z / h;
+  const double fx = double(ray.origin.x) - cyl.base.x, fy = double(ray.origin.y) - cyl.base.y,
+               fz = double(ray.origin.z) - cyl.base.z;
+  const double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
+  const double s0 = fx * wx + fy * wy + fz * wz;
+  const double ds = dx * wx + dy * wy + dz * wz;
+  const double q0x = fx - s0 * wx, q0y = fy - s0 * wy, q0z = fz - s0 * wz;
+  const double qdx = dx - ds * wx, qdy = dy - ds * wy, qdz = dz - ds * wz;
+  const double k = (double(cyl.apex_radius) - cyl.base_radius) / h;
+  const double r_at_origin = cyl.base_radius + k * s0;
+  const double a = qdx * qdx + qdy * qdy + qdz * qdz - k * k * ds * ds;
+  const double b = 2.0 * (q0x * qdx + q0y * qdy + q0z * qdz - k * r_at_origin * ds);
+  const double c = q0x * q0x + q0y * q0y + q0z * q0z - r_at_origin * r_at_origin;
+
+  double roots[2];
+  int count = 0;
+  if (std::fabs(a) < 1e-12 * (std::fabs(b) + std::fabs(c) + 1e-30)) {
+    if (b == 0.0) return false;
+    roots[count++] = -c / b;  // ray parallel to a generating line of the cone
+  } else {
+    const double disc = b * b - 4.0 * a * c;
+    if (disc < 0.0) return false;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    double r0 = q != 0.0 ? c / q : 0.0;
+    double r1 = q / a;
+    if (r0 > r1) std::swap(r0, r1);
+    roots[count++] = r0;
+    roots[count++] = r1;
+  }
+  for (int i = 0; i < count; ++i) {
+    const double tr = roots[i];
+    if (!(tr >= tmin && tr < tmax)) continue;
+    const double s = s0 + tr * ds;
+    if (s < 0.0 || s > h) continue;
+    if (cyl.base_radius + k * s < 0.0) continue;  // the mirror nappe of a cone
+    t = static_cast<float>(tr);
+    if (!(t >= tmin && t < tmax)) continue;
+    height = static_cast<float>(s / h);
+    return true;
+  }
+  return false;
+}
+
+Vec3 cylinder_normal(const Cylinder& cyl, Vec3 p) {
+  const Vec3 axis = cyl.apex - cyl.base;
+  const float h = length(axis);
+  const Vec3 w = axis / h;
+  const Vec3 rel = p - cyl.base;
+  const Vec3 radial = rel - w * dot(rel, w);
+  const float rl = length(radial);
+  if (rl == 0.f) return w;
+  // The cone's normal tilts along the axis by the slope of the radius.
+  const float k = (cyl.apex_radius - cyl.base_radius) / h;
+  return normalize(radial / rl - w * k);
+}
+
+Box3 cylinder_bounds(const Cylinder& cyl) {
+  const Vec3 axis = cyl.apex - cyl.base;
+  const float len2 = dot(axis, axis);
+  Vec3 e{1.f, 1.f, 1.f};
+  if (len2 > 0.f) {
+    const Vec3 w = axis / std::sqrt(len2);
+    e = {std::sqrt(std::max(0.f, 1.f - w.x * w.x)), std::sqrt(std::max(0.f, 1.f - w.y * w.y)),
+         std::sqrt(std::max(0.f, 1.f - w.z * w.z))};
+  }
+  Box3 b;
+  b.extend(cyl.base - e * cyl.base_radius);
+  b.extend(cyl.base + e * cyl.base_radius);
+  b.extend(cyl.apex - e * cyl.apex_radius);
+  b.extend(cyl.apex + e * cyl.apex_radius);
+  return b;
+}
+
+}  // namespace raylab

@@ -1,0 +1,112 @@
+#include "raylab/geometry/geometry.h"
+
+#include <cassert>
+
+namespace raylab {
+
+std::uint32_t Geometry::add(const Triangle& t, std::uint32_t object) {
+  triangles.push_back(t);
+  triangle_objects.push_back(object);
+  if (!triangle_normals.empty()) triangle_normals.push_back({Vec3{}, Vec3{}, Vec3{}});
+  return static_cast<std::uint32_t>(triangles.size() - 1);
+}
+
+std::uint32_t Geometry::add(const Triangle& t, const std::array<Vec3, 3>& normals, std::uint32_t object) {
+  if (triangle_normals.size() < triangles.size()) triangle_normals.resize(triangles.size(), {Vec3{}, Vec3{}, Vec3{}});
+  triangles.push_back(t);
+  triangle_objects.push_back(object);
+  triangle_normals.push_back(normals);
+  return static_cast<std::uint32_t>(triangles.size() - 1);
+}
+
+void Geometry::add(const Sphere& s, std::uint32_t object) {
+  spheres.push_back(s);
+  sphere_objects.push_back(object);
+}
+
+void Geometry::add(const Cylinder& c, std::uint32_t object) {
+  cylinders.push_back(c);
+  cylinder_objects.push_back(object);
+}
+
+void Geometry::add(const Disk& d, std::uint32_t object) {
+  disks.push_back(d);
+  disk_objects.push_back(object);
+}
+
+void Geometry::add(const Quad& q, std::uint32_t object) {
+  quads.push_back(q);
+  quad_objects.push_back(object);
+}
+
+ShapeRef Geometry::resolve(std::uint32_t id) const {
+  assert(id < size());
+  if (id < triangles.size()) return {ShapeKind::kTriangle, id};
+  id -= static_cast<std::uint32_t>(triangles.size());
+  if (id < spheres.size()) return {ShapeKind::kSphere, id};
+  id -= static_cast<std::uint32_t>(spheres.size());
+  if (id < cylinders.size()) return {ShapeKind::kCylinder, id};
+  id -= static_cast<std::uint32_t>(cylinders.size());
+  if (id < disks.size()) return {ShapeKind::kDisk, id};
+  id -= static_cast<std::uint32_t>(disks.size());
+  return {ShapeKind::kQuad, id};
+}
+
+Box3 Geometry::bounds(std::uint32_t prim_id) const {
+  const ShapeRef r = resolve(prim_id);
+  switch (r.kind) {
+    case ShapeKind::kTriangle: {
+      const Triangle& t = triangles[r.index];
+      Box3 b;
+      b.extend(t.p0);
+      b.extend(t.p1);
+      b.extend(t.p2);
+      return b;
+    }
+    case ShapeKind::kSphere: return sphere_bounds(spheres[r.index]);
+    case ShapeKind::kCylinder: return cylinder_bounds(cylinders[r.index]);
+    case ShapeKind::kDisk: return disk_bounds(disks[r.index]);
+    case ShapeKind::kQuad: return quad_bounds(quads[r.index]);
+  }
+  return {};
+}
+
+Box3 Geometry::bounds() const {
+  Box3 b;
+  for (std::uint32_t i = 0, n = size(); i < n; ++i) b.extend(bounds(i));
+  return b;
+}
+
+std::uint32_t Geometry::object_of(std::uint32_t prim_id) const {
+  const ShapeRef r = resolve(prim_id);
+  switch (r.kind) {
+    case ShapeKind::kTriangle: return triangle_objects[r.index];
+    case ShapeKind::kSphere: return sphere_objects[r.index];
+    case ShapeKind::kCylinder: return cylinder_objects[r.index];
+    case ShapeKind::kDisk: return disk_objects[r.index];
+    case ShapeKind::kQuad: return quad_objects[r.index];
+  }
+  return kInvalidId;
+}
+
+bool Geometry::intersect(std::uint32_t prim_id, const WatertightRay& wr, Ray& ray, Hit& hit) const {
+  const ShapeRef r = resolve(prim_id);
+  float t = 0.f, u = 0.f, v = 0.f;
+  bool found = false;
+  switch (r.kind) {
+    case ShapeKind::kTriangle: found = intersect_triangle(triangles[r.index], wr, ray.tmin, ray.tmax, t, u, v); break;
+    case ShapeKind::kSphere: found = intersect_sphere(spheres[r.index], ray, ray.tmin, ray.tmax, t); break;
+    case ShapeKind::kCylinder: found = intersect_cylinder(cylinders[r.index], ray, ray.tmin, ray.tmax, t, v); break;
+    case ShapeKind::kDisk: found = intersect_disk(disks[r.index], ray, ray.tmin, ray.tmax, t); break;
+    case ShapeKind::kQuad: found = intersect_quad(quads[r.index], ray, ray.tmin, ray.tmax, t, u, v); break;
+  }
+  if (!found) return false;
+  ray.tmax = t;
+  hit.t = t;
+  hit.prim_id = prim_id;
+  hit.u = u;
+  hit.v = v;
+  return true;
+}
+
+}  // namespace raylab
