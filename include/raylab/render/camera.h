@@ -14,8 +14,7 @@ class Camera {
   /// Builds the camera frame from `spec` for a `width` x `height` image.
   Camera(const CameraSpec& spec, int width, int height);
 
-  /// The primary ray through image position (x, y). Its direction is not normalised: it points
-  /// at the image plane at unit distance, so t measures distance along the view axis.
+  /// The primary ray through image position (x, y), with a unit direction (t is distance).
   Ray generate(float x, float y) const;
 
  private:

@@ -16,7 +16,8 @@ struct RenderOptions {
   int threads = 0;               ///< worker threads; 0 = all cores
   int tile_size = 16;            ///< square tiles of this many pixels per side
   bool count_traversal = false;  ///< count nodes and primitive tests (slower); see RenderStats
-  /// Called from one thread with (tiles done, tiles total) as tiles finish; may be empty.
+  /// Called with (tiles done, tiles total) each time a tile finishes, from whichever worker
+  /// finished it (so it must be thread-safe); may be empty.
   std::function<void(int, int)> on_progress;
 };
 

@@ -18,6 +18,7 @@ struct RenderSettings {
   Color background{0.f, 0.f, 0.f}; ///< radiance of rays that leave the scene
   bool sky_gradient = false;       ///< background blends towards `horizon` near the horizon
   Color horizon{1.f, 1.f, 1.f};    ///< the gradient's horizon colour
+  Color ambient{0.f, 0.f, 0.f};    ///< Whitted's ambient term: added as ambient * kd * diffuse colour
 };
 
 }  // namespace raylab

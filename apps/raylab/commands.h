@@ -1,0 +1,20 @@
+#pragma once
+/// \file
+/// The subcommands of the raylab command line. Each registers its options on the app and returns
+/// the function that runs it; exit codes: 0 success, 1 input error, 2 usage error.
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace raylab::cli {
+
+/// A subcommand's body, run after parsing; returns the process exit code.
+using CommandRunner = std::function<int()>;
+
+/// `raylab render [SCENE] ...`: renders a scene to an image.
+CommandRunner add_render_command(CLI::App& app);
+
+/// `raylab diff A B [--max-rmse X]`: compares two images.
+CommandRunner add_diff_command(CLI::App& app);
+
+}  // namespace raylab::cli

@@ -1,0 +1,43 @@
+// `raylab diff`: compares two images by RMSE (in 8-bit display steps).
+
+#include <fmt/core.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "commands.h"
+#include "raylab/io/image_io.h"
+
+namespace raylab::cli {
+namespace {
+
+struct DiffArgs {
+  std::string first, second;
+  std::optional<double> max_rmse;
+};
+
+int run(const DiffArgs& args) {
+  const Film a = read_image(args.first);
+  const Film b = read_image(args.second);
+  const double rmse = image_rmse(a, b);
+  fmt::print("rmse {:.4f} (8-bit sRGB steps) over {}x{} pixels\n", rmse, a.width(), a.height());
+  if (args.max_rmse && rmse > *args.max_rmse) {
+    fmt::print(stderr, "raylab diff: images differ: rmse {:.4f} > {:.4f}\n", rmse, *args.max_rmse);
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+CommandRunner add_diff_command(CLI::App& app) {
+  auto args = std::make_shared<DiffArgs>();
+  CLI::App* cmd = app.add_subcommand("diff", "Compare two images (.png .exr .pfm) by RMSE in 8-bit sRGB steps");
+  cmd->add_option("first", args->first, "First image")->required();
+  cmd->add_option("second", args->second, "Second image")->required();
+  cmd->add_option("--max-rmse", args->max_rmse, "Exit with 1 when the RMSE exceeds this")->check(CLI::NonNegativeNumber);
+  return [args] { return run(*args); };
+}
+
+}  // namespace raylab::cli

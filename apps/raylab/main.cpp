@@ -1,0 +1,44 @@
+// raylab command line: parses arguments, runs one subcommand, maps errors to exit codes.
+
+#include <cstdio>
+#include <exception>
+
+#include "commands.h"
+#include "raylab/core/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"raylab: a ray tracing engine and lab for efficiency and quality"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "raylab 0.1.0");
+  const raylab::cli::CommandRunner run_render = raylab::cli::add_render_command(app);
+  const raylab::cli::CommandRunner run_diff = raylab::cli::add_diff_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "raylab: %s\nRun 'raylab --help' for usage.\n", e.what());
+    return 2;
+  }
+  try {
+    if (app.got_subcommand("render")) return run_render();
+    if (app.got_subcommand("diff")) return run_diff();
+  } catch (const raylab::UsageError& e) {
+    std::fprintf(stderr, "raylab: %s\n", e.what());
+    return 2;
+  } catch (const raylab::InputError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "raylab: out of memory\n");
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "raylab: internal error: %s\n", e.what());
+    return 3;
+  }
+  return 2;
+}

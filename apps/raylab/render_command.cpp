@@ -1,0 +1,118 @@
+// `raylab render`: argument parsing and reporting only; the work is in the library.
+
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "raylab/accel/factory.h"
+#include "raylab/core/error.h"
+#include "raylab/io/atomic_file.h"
+#include "raylab/io/image_io.h"
+#include "raylab/io/scene_loader.h"
+#include "raylab/render/progress.h"
+#include "raylab/render/renderer.h"
+
+namespace raylab::cli {
+namespace {
+
+struct RenderArgs {
+  std::string scene = "demo";
+  std::string output = "render.png";
+  std::optional<int> width, height, spp, max_depth;
+  std::optional<std::uint64_t> seed;
+  std::string accel = "bvh";
+  int threads = 0;
+  bool stats = false;
+  bool quiet = false;
+};
+
+std::string human_bytes(std::size_t bytes) {
+  if (bytes < 1024) return fmt::format("{} B", bytes);
+  if (bytes < 1024 * 1024) return fmt::format("{:.1f} KiB", bytes / 1024.0);
+  return fmt::format("{:.1f} MiB", bytes / (1024.0 * 1024.0));
+}
+
+void print_stats(const RenderStats& s, const AccelInfo& info, double seconds) {
+  fmt::print("{:<12}{:>14}{:>14}\n", "rays", "cast", "hit");
+  for (int k = 0; k < static_cast<int>(RayKind::kCount); ++k) {
+    fmt::print("{:<12}{:>14}{:>14}\n", ray_kind_name(static_cast<RayKind>(k)), s.rays[k], s.ray_hits[k]);
+  }
+  std::uint64_t hits = 0;
+  for (auto h : s.ray_hits) hits += h;
+  const double total = static_cast<double>(s.total_rays());
+  fmt::print("{:<12}{:>14}{:>14}\n", "total", s.total_rays(), hits);
+  fmt::print("nodes visited per ray     {:.2f}\n", total > 0 ? s.traversal.nodes_visited / total : 0.0);
+  fmt::print("primitive tests per ray   {:.2f}\n", total > 0 ? s.traversal.prim_tests / total : 0.0);
+  fmt::print("accelerator               {} ({} primitives, {} nodes, {} leaves, depth {})\n", info.name,
+             info.primitive_count, info.node_count, info.leaf_count, info.max_depth);
+  fmt::print("build time                {:.2f} ms\n", info.build_seconds * 1e3);
+  fmt::print("accelerator memory        {} ({:.1f} bytes per primitive)\n", human_bytes(info.memory_bytes),
+             info.primitive_count ? static_cast<double>(info.memory_bytes) / info.primitive_count : 0.0);
+  fmt::print("render time               {:.3f} s (with counting enabled)\n", seconds);
+  fmt::print("throughput                {:.2f} Mrays/s\n", seconds > 0 ? total / seconds * 1e-6 : 0.0);
+}
+
+int run(const RenderArgs& args) {
+  check_image_extension(args.output);  // usage error before any work
+  check_writable(args.output);         // input error before any work
+  Scene scene = load_scene(args.scene);
+  RenderSettings& s = scene.settings;
+  if (args.width) s.width = *args.width;
+  if (args.height) s.height = *args.height;
+  if (args.spp) s.spp = *args.spp;
+  if (args.max_depth) s.max_depth = *args.max_depth;
+  if (args.seed) s.seed = *args.seed;
+
+  const std::unique_ptr<Accelerator> accel = make_accelerator(args.accel, scene.geometry);
+  Film film(s.width, s.height);
+  const bool interactive = ::isatty(STDERR_FILENO) != 0;
+  std::optional<ProgressBar> bar;
+  if (!args.quiet) bar.emplace("render", stderr, interactive);
+  RenderOptions options;
+  options.threads = args.threads;
+  options.count_traversal = args.stats;
+  if (bar) options.on_progress = [&bar](int done, int total) { bar->update(done, total); };
+  const RenderResult result = render(scene, *accel, film, options);
+  const double mrays = result.seconds > 0 ? result.stats.total_rays() / result.seconds * 1e-6 : 0.0;
+  if (bar) bar->finish(fmt::format("{}x{}, {} spp, {} rays ({:.2f} Mrays/s)", s.width, s.height, s.spp,
+                                   result.stats.total_rays(), mrays));
+  write_image(film, args.output);
+  if (args.stats) print_stats(result.stats, accel->info(), result.seconds);
+  if (!args.quiet) {
+    fmt::print("wrote {} ({}x{}, {} spp, --accel {}) in {}\n", args.output, s.width, s.height, s.spp, args.accel,
+               ProgressBar::format_duration(result.seconds));
+  }
+  return 0;
+}
+
+}  // namespace
+
+CommandRunner add_render_command(CLI::App& app) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image (.png, .exr or .pfm)");
+  cmd->add_option("scene", args->scene, "Built-in scene name (demo) or mesh file (.obj)")->capture_default_str();
+  cmd->add_option("-o,--output", args->output, "Output image; format from the extension: .png .exr .pfm")
+      ->capture_default_str();
+  cmd->add_option("--width", args->width, "Image width in pixels")->check(CLI::Range(1, 32768));
+  cmd->add_option("--height", args->height, "Image height in pixels")->check(CLI::Range(1, 32768));
+  cmd->add_option("--spp", args->spp, "Samples per pixel (jittered, box filter)")->check(CLI::Range(1, 1 << 16));
+  std::vector<std::string> names;
+  for (auto n : accelerator_names()) names.emplace_back(n);
+  cmd->add_option("--accel", args->accel, "Acceleration structure")->check(CLI::IsMember(names))->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Worker threads; 0 = all cores")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of every random choice (default: the scene's, 0)");
+  cmd->add_option("--max-depth", args->max_depth, "Ray tree depth; 1 = eye rays only (default 5)")
+      ->check(CLI::Range(1, 64));
+  cmd->add_flag("--stats", args->stats, "Print ray counts, traversal work and timings after the render");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress bar and no summary");
+  return [args] { return run(*args); };
+}
+
+}  // namespace raylab::cli

@@ -1,0 +1,74 @@
+#include "raylab/io/atomic_file.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+#include "raylab/core/error.h"
+
+namespace raylab {
+namespace {
+
+std::string parent_folder(const std::string& path) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  return parent.empty() ? std::string(".") : parent.string();
+}
+
+}  // namespace
+
+void check_writable(const std::string& path) {
+  const std::string folder = parent_folder(path);
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec)) {
+    throw InputError(path, "cannot write: folder '" + folder + "' does not exist");
+  }
+  if (::access(folder.c_str(), W_OK) != 0) {
+    throw InputError(path, "cannot write: folder '" + folder + "' is not writable (" + std::strerror(errno) + ")");
+  }
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "cannot write: it is a folder");
+}
+
+void write_file_atomically(const std::string& path, std::span<const unsigned char> bytes) {
+  check_writable(path);
+  // mkstemp in the target's folder: the rename below then stays on one file system (atomic).
+  std::string temp = path + ".XXXXXX.tmp";
+  std::vector<char> name(temp.begin(), temp.end());
+  name.push_back('\0');
+  const int fd = ::mkstemps(name.data(), 4);
+  if (fd < 0) throw InputError(path, std::string("cannot create temporary file: ") + std::strerror(errno));
+  temp.assign(name.data());
+  auto fail = [&](const char* what) {
+    const int err = errno;
+    ::close(fd);
+    ::unlink(temp.c_str());
+    throw InputError(path, std::string(what) + ": " + std::strerror(err));
+  };
+  std::size_t written = 0;
+  while (written < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      fail("write failed");
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::fchmod(fd, 0644) != 0) fail("cannot set permissions");
+  if (::fsync(fd) != 0) fail("cannot flush to disk");
+  if (::close(fd) != 0) {
+    const int err = errno;
+    ::unlink(temp.c_str());
+    throw InputError(path, std::string("close failed: ") + std::strerror(err));
+  }
+  if (std::rename(temp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(temp.c_str());
+    throw InputError(path, std::string("cannot rename temporary file into place: ") + std::strerror(err));
+  }
+}
+
+}  // namespace raylab

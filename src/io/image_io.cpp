@@ -1,0 +1,221 @@
+#include "raylab/io/image_io.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfIO.h>
+#include <ImfOutputFile.h>
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "raylab/core/error.h"
+#include "raylab/io/atomic_file.h"
+
+namespace raylab {
+namespace {
+
+constexpr std::array<std::string_view, 3> kExtensions = {".png", ".exr", ".pfm"};
+
+std::string lower_extension(std::string_view path) {
+  const auto dot = path.rfind('.');
+  const auto slash = path.find_last_of('/');
+  if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) return "";
+  std::string ext(path.substr(dot));
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+std::vector<unsigned char> encode_png(const Film& film) {
+  std::vector<unsigned char> rgb(std::size_t(film.width()) * film.height() * 3);
+  for (std::size_t i = 0; i < film.pixels().size(); ++i) {
+    const Color c = film.pixels()[i];
+    for (int k = 0; k < 3; ++k) {
+      rgb[3 * i + k] = static_cast<unsigned char>(std::lround(linear_to_srgb(c[k]) * 255.f));
+    }
+  }
+  std::vector<unsigned char> out;
+  auto sink = [](void* context, void* data, int size) {
+    auto* v = static_cast<std::vector<unsigned char>*>(context);
+    v->insert(v->end(), static_cast<unsigned char*>(data), static_cast<unsigned char*>(data) + size);
+  };
+  if (!stbi_write_png_to_func(sink, &out, film.width(), film.height(), 3, rgb.data(), film.width() * 3)) {
+    throw InputError("", "PNG encoding failed");
+  }
+  return out;
+}
+
+// PFM: a text header, then little-endian float rows from the bottom of the image up.
+std::vector<unsigned char> encode_pfm(const Film& film) {
+  const std::string header = "PF\n" + std::to_string(film.width()) + " " + std::to_string(film.height()) + "\n-1.0\n";
+  std::vector<unsigned char> out(header.begin(), header.end());
+  out.reserve(out.size() + std::size_t(film.width()) * film.height() * 12);
+  for (int y = film.height() - 1; y >= 0; --y) {
+    for (int x = 0; x < film.width(); ++x) {
+      const Color c = film.at(x, y);
+      const float v[3] = {c.x, c.y, c.z};
+      const auto* b = reinterpret_cast<const unsigned char*>(v);
+      out.insert(out.end(), b, b + sizeof v);
+    }
+  }
+  return out;
+}
+
+// OpenEXR writes through a stream; this one collects the bytes so the file can be written atomically.
+class MemoryOStream final : public Imf::OStream {
+ public:
+  MemoryOStream() : Imf::OStream("memory") {}
+  void write(const char c[], int n) override {
+    if (m_pos + n > m_data.size()) m_data.resize(m_pos + n);
+    std::memcpy(m_data.data() + m_pos, c, static_cast<std::size_t>(n));
+    m_pos += static_cast<std::size_t>(n);
+  }
+  uint64_t tellp() override { return m_pos; }
+  void seekp(uint64_t pos) override { m_pos = pos; }
+  std::vector<unsigned char>& data() { return m_data; }
+
+ private:
+  std::vector<unsigned char> m_data;
+  std::size_t m_pos = 0;
+};
+
+std::vector<unsigned char> encode_exr(const Film& film) {
+  Imf::Header header(film.width(), film.height());
+  header.channels().insert("R", Imf::Channel(Imf::FLOAT));
+  header.channels().insert("G", Imf::Channel(Imf::FLOAT));
+  header.channels().insert("B", Imf::Channel(Imf::FLOAT));
+  MemoryOStream stream;
+  Imf::OutputFile file(stream, header);
+  Imf::FrameBuffer fb;
+  auto* base = reinterpret_cast<char*>(const_cast<Color*>(film.pixels().data()));
+  const std::size_t xs = sizeof(Color), ys = sizeof(Color) * film.width();
+  fb.insert("R", Imf::Slice(Imf::FLOAT, base + 0, xs, ys));
+  fb.insert("G", Imf::Slice(Imf::FLOAT, base + 4, xs, ys));
+  fb.insert("B", Imf::Slice(Imf::FLOAT, base + 8, xs, ys));
+  file.setFrameBuffer(fb);
+  file.writePixels(film.height());
+  return std::move(stream.data());
+}
+
+Film read_pfm(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot open file");
+  std::string magic;
+  int w = 0, h = 0;
+  double scale = 0;
+  in >> magic >> w >> h >> scale;
+  in.get();
+  if (magic != "PF" || w <= 0 || h <= 0 || !in) throw InputError(path, 1, 1, "not an RGB PFM file");
+  if (scale > 0) throw InputError(path, 3, 1, "big-endian PFM is not supported");
+  Film film(w, h);
+  for (int y = h - 1; y >= 0; --y) {
+    for (int x = 0; x < w; ++x) {
+      float v[3];
+      if (!in.read(reinterpret_cast<char*>(v), sizeof v)) throw InputError(path, "PFM file is truncated");
+      film.at(x, y) = {v[0], v[1], v[2]};
+    }
+  }
+  return film;
+}
+
+Film read_exr(const std::string& path) {
+  try {
+    Imf::InputFile file(path.c_str());
+    const auto dw = file.header().dataWindow();
+    const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
+    Film film(w, h);
+    auto* base = reinterpret_cast<char*>(const_cast<Color*>(film.pixels().data())) -
+                 (std::ptrdiff_t(dw.min.x) + std::ptrdiff_t(dw.min.y) * w) * std::ptrdiff_t(sizeof(Color));
+    Imf::FrameBuffer fb;
+    const std::size_t xs = sizeof(Color), ys = sizeof(Color) * w;
+    fb.insert("R", Imf::Slice(Imf::FLOAT, base + 0, xs, ys));
+    fb.insert("G", Imf::Slice(Imf::FLOAT, base + 4, xs, ys));
+    fb.insert("B", Imf::Slice(Imf::FLOAT, base + 8, xs, ys));
+    file.setFrameBuffer(fb);
+    file.readPixels(dw.min.y, dw.max.y);
+    return film;
+  } catch (const std::exception& e) {
+    throw InputError(path, std::string("cannot read EXR: ") + e.what());
+  }
+}
+
+Film read_png(const std::string& path) {
+  int w = 0, h = 0, n = 0;
+  unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 3);
+  if (!data) throw InputError(path, std::string("cannot read image: ") + stbi_failure_reason());
+  Film film(w, h);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const unsigned char* p = data + 3 * (std::size_t(y) * w + x);
+      film.at(x, y) = {srgb_to_linear(p[0] / 255.f), srgb_to_linear(p[1] / 255.f), srgb_to_linear(p[2] / 255.f)};
+    }
+  }
+  stbi_image_free(data);
+  return film;
+}
+
+}  // namespace
+
+std::span<const std::string_view> image_extensions() { return kExtensions; }
+
+void check_image_extension(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  if (std::find(kExtensions.begin(), kExtensions.end(), ext) != kExtensions.end()) return;
+  throw UsageError("cannot write '" + path + "': unknown image format '" + (ext.empty() ? "(none)" : ext) +
+                   "' (valid: .png, .exr, .pfm)");
+}
+
+float linear_to_srgb(float v) {
+  if (!(v > 0.f)) return 0.f;
+  if (v >= 1.f) return 1.f;
+  return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.f / 2.4f) - 0.055f;
+}
+
+float srgb_to_linear(float e) {
+  return e <= 0.04045f ? e / 12.92f : std::pow((e + 0.055f) / 1.055f, 2.4f);
+}
+
+std::vector<unsigned char> encode_image(const Film& film, std::string_view extension) {
+  if (extension == ".png") return encode_png(film);
+  if (extension == ".pfm") return encode_pfm(film);
+  if (extension == ".exr") return encode_exr(film);
+  throw UsageError("unknown image format '" + std::string(extension) + "' (valid: .png, .exr, .pfm)");
+}
+
+void write_image(const Film& film, const std::string& path) {
+  check_image_extension(path);
+  const std::vector<unsigned char> bytes = encode_image(film, lower_extension(path));
+  write_file_atomically(path, bytes);
+}
+
+Film read_image(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".pfm") return read_pfm(path);
+  if (ext == ".exr") return read_exr(path);
+  return read_png(path);
+}
+
+double image_rmse(const Film& a, const Film& b) {
+  if (a.width() != b.width() || a.height() != b.height()) {
+    throw InputError("", "images differ in size: " + std::to_string(a.width()) + "x" + std::to_string(a.height()) +
+                             " and " + std::to_string(b.width()) + "x" + std::to_string(b.height()));
+  }
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.pixels().size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      const double d = 255.0 * (linear_to_srgb(a.pixels()[i][k]) - linear_to_srgb(b.pixels()[i][k]));
+      sum += d * d;
+    }
+  }
+  const double n = 3.0 * static_cast<double>(a.pixels().size());
+  return n > 0 ? std::sqrt(sum / n) : 0.0;
+}
+
+}  // namespace raylab
