@@ -1,0 +1,36 @@
+# The two commands of README.md. Each installs what is missing, configures and builds.
+#   make demo   renders the built-in scene to demo.png
+#   make test   builds everything and runs the whole test suite
+# CMAKE_ARGS adds configure options, e.g. make test CMAKE_ARGS=-DRAYLAB_WERROR=ON
+
+PRESET ?= release
+BUILD_DIR := build/$(PRESET)
+CMAKE_ARGS ?=
+JOBS ?= $(shell nproc)
+
+.PHONY: deps configure demo test bench format clean
+
+deps:
+	@bash scripts/install-deps.sh
+
+configure: deps
+	cmake --preset $(PRESET) -DRAYLAB_BUILD_TESTS=ON $(CMAKE_ARGS)
+
+demo: configure
+	cmake --build $(BUILD_DIR) --target raylab_cli -j $(JOBS)
+	$(BUILD_DIR)/bin/raylab render demo -o demo.png
+	@echo "demo: image at $(CURDIR)/demo.png"
+
+test: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
+
+bench: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+	bash scripts/bench.sh $(BUILD_DIR)
+
+format:
+	clang-format -i $$(git ls-files '*.cpp' '*.h')
+
+clean:
+	rm -rf build
