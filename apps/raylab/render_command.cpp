@@ -107,7 +107,9 @@ CommandRunner add_render_command(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "Worker threads; 0 = all cores")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of every random choice (default: the scene's, 0)");
+  // CLI11 (2.1) would read "-1" into the unsigned seed as 2^64 - 1 without a word.
+  cmd->add_option("--seed", args->seed, "Seed of every random choice (default: the scene's, 0)")
+      ->check([](const std::string& v) { return v.starts_with('-') ? "the seed must not be negative" : ""; });
   cmd->add_option("--max-depth", args->max_depth, "Ray tree depth; 1 = eye rays only (default 5)")
       ->check(CLI::Range(1, 64));
   cmd->add_flag("--stats", args->stats, "Print ray counts, traversal work and timings after the render");

@@ -1,6 +1,7 @@
 // BVH traversal: closest hit with front-to-back child order, any hit with early exit.
 
 #include <chrono>
+#include <cmath>
 
 #include "raylab/accel/bvh.h"
 
@@ -11,28 +12,38 @@ namespace {
 // makes the float slab test conservative, so a primitive lying on a box face is never culled.
 constexpr float kSlabWiden = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 
-// Per-ray constants for box tests: origin, reciprocal direction and which plane is near per axis.
+// Direction components smaller than this are treated as this (its reciprocal stays finite).
+constexpr float kTinyDirection = 1e-18f;
+
+// Per-ray constants for box tests. The slab distances are computed as
+// plane * inv_dir - origin * inv_dir, one fused multiply-add per plane. Direction components of
+// zero (or nearly) are replaced by a tiny value of the same sign first: with an exact zero the
+// product would be inf - inf = NaN, and culling on that axis would be lost.
 struct BoxRay {
-  Vec3 origin;
-  Vec3 inv_dir;
+  float inv_dir[3];
+  float origin_scaled[3];  // origin * inv_dir
   bool negative[3];
 
-  explicit BoxRay(const Ray& ray) : origin(ray.origin), inv_dir(safe_reciprocal(ray.direction)) {
-    for (int a = 0; a < 3; ++a) negative[a] = inv_dir[a] < 0.f;
+  explicit BoxRay(const Ray& ray) {
+    for (int a = 0; a < 3; ++a) {
+      float d = ray.direction[a];
+      if (std::fabs(d) < kTinyDirection) d = std::copysign(kTinyDirection, d);
+      inv_dir[a] = 1.f / d;
+      origin_scaled[a] = ray.origin[a] * inv_dir[a];
+      negative[a] = inv_dir[a] < 0.f;
+    }
   }
 };
 
-// Entry distance into `node` if the ray's [tmin, tmax] overlaps it. NaN slabs (origin on the
-// plane of a face, direction parallel to it) are ignored by the comparison order, so boxes are
-// closed sets.
+// Entry distance into `node` if the ray's [tmin, tmax] overlaps it.
 inline bool hit_node(const BvhNode& node, const BoxRay& r, float tmin, float tmax, float& t_enter) {
   float t_near = tmin;
   float t_far = tmax;
   for (int a = 0; a < 3; ++a) {
     const float near_plane = r.negative[a] ? node.hi[a] : node.lo[a];
     const float far_plane = r.negative[a] ? node.lo[a] : node.hi[a];
-    const float t0 = (near_plane - r.origin[a]) * r.inv_dir[a];
-    const float t1 = (far_plane - r.origin[a]) * r.inv_dir[a] * kSlabWiden;
+    const float t0 = std::fma(near_plane, r.inv_dir[a], -r.origin_scaled[a]);
+    const float t1 = std::fma(far_plane, r.inv_dir[a], -r.origin_scaled[a]) * kSlabWiden;
     t_near = t0 > t_near ? t0 : t_near;
     t_far = t1 < t_far ? t1 : t_far;
   }

@@ -36,7 +36,10 @@ void check_writable(const std::string& path) {
 void write_file_atomically(const std::string& path, std::span<const unsigned char> bytes) {
   check_writable(path);
   // mkstemp in the target's folder: the rename below then stays on one file system (atomic).
-  std::string temp = path + ".XXXXXX.tmp";
+  // The name is cut so that the temporary's name (11 characters longer) stays within NAME_MAX
+  // (255) whenever the target's does.
+  const std::filesystem::path target(path);
+  std::string temp = (target.parent_path() / target.filename().string().substr(0, 200)).string() + ".XXXXXX.tmp";
   std::vector<char> name(temp.begin(), temp.end());
   name.push_back('\0');
   const int fd = ::mkstemps(name.data(), 4);

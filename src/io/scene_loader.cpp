@@ -29,8 +29,9 @@ void fit_camera_and_lights(Scene& scene) {
   }
   CameraSpec& cam = scene.camera;
   cam.vfov_degrees = 40.f;
-  // Distance at which the bounding sphere fills the vertical field of view, with a margin.
-  const float distance = 1.15f * radius / std::sin(0.5f * cam.vfov_degrees * 3.14159265f / 180.f);
+  // Distance at which the bounding sphere just fills the vertical field of view: the sphere
+  // around the box is loose already, so no further margin is needed.
+  const float distance = 1.0f * radius / std::sin(0.5f * cam.vfov_degrees * 3.14159265f / 180.f);
   const Vec3 view_dir = normalize(Vec3{0.35f, 0.3f, 1.f});
   cam.at = center;
   cam.from = center + view_dir * distance;

@@ -16,16 +16,38 @@ struct Vec3 {
   /// All three components equal to `s`.
   constexpr explicit Vec3(float s) : x(s), y(s), z(s) {}
 
-  /// Component `i` (0, 1, 2); no range check.
-  constexpr float operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+  /// Component `i` (0, 1, 2); no range check. A direct indexed load (x, y, z are contiguous in
+  /// this standard-layout struct): the triangle test indexes with per-ray axis numbers, where a
+  /// chain of selects would cost more than the arithmetic.
+  float operator[](int i) const { return (&x)[i]; }
   /// Mutable component `i` (0, 1, 2); no range check.
-  constexpr float& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
+  float& operator[](int i) { return (&x)[i]; }
 
   constexpr Vec3 operator-() const { return {-x, -y, -z}; }
-  constexpr Vec3& operator+=(Vec3 b) { x += b.x; y += b.y; z += b.z; return *this; }
-  constexpr Vec3& operator-=(Vec3 b) { x -= b.x; y -= b.y; z -= b.z; return *this; }
-  constexpr Vec3& operator*=(float s) { x *= s; y *= s; z *= s; return *this; }
-  constexpr Vec3& operator*=(Vec3 b) { x *= b.x; y *= b.y; z *= b.z; return *this; }
+  constexpr Vec3& operator+=(Vec3 b) {
+    x += b.x;
+    y += b.y;
+    z += b.z;
+    return *this;
+  }
+  constexpr Vec3& operator-=(Vec3 b) {
+    x -= b.x;
+    y -= b.y;
+    z -= b.z;
+    return *this;
+  }
+  constexpr Vec3& operator*=(float s) {
+    x *= s;
+    y *= s;
+    z *= s;
+    return *this;
+  }
+  constexpr Vec3& operator*=(Vec3 b) {
+    x *= b.x;
+    y *= b.y;
+    z *= b.z;
+    return *this;
+  }
   constexpr Vec3& operator/=(float s) { return *this *= (1.f / s); }
 };
 
@@ -46,9 +68,7 @@ constexpr bool operator==(Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a
 /// Dot product.
 constexpr float dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 /// Cross product (right-handed).
-constexpr Vec3 cross(Vec3 a, Vec3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
+constexpr Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 /// Euclidean length.
 inline float length(Vec3 a) { return std::sqrt(dot(a, a)); }
 /// Squared length.

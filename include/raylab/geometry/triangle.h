@@ -40,7 +40,7 @@ struct WatertightRay {
 
 /// Tests `tri` against the ray described by `wr`, accepting hits with tmin <= t < tmax.
 /// Watertight: a ray through an edge or vertex shared by two triangles hits at least one of them
-/// (edge functions that round to zero are recomputed in double precision). On a hit writes `t`
+/// (edge functions are evaluated with exact products, so their signs are exact). On a hit writes `t`
 /// and the barycentric weights `u` (of p1) and `v` (of p2).
 inline bool intersect_triangle(const Triangle& tri, const WatertightRay& wr, float tmin, float tmax,
                                float& t, float& u, float& v) {
@@ -53,15 +53,14 @@ inline bool intersect_triangle(const Triangle& tri, const WatertightRay& wr, flo
   const float by = b[wr.ky] - wr.sy * b[wr.kz];
   const float cx = c[wr.kx] - wr.sx * c[wr.kz];
   const float cy = c[wr.ky] - wr.sy * c[wr.kz];
-  float e0 = cx * by - cy * bx;  // weight of p0
-  float e1 = ax * cy - ay * cx;  // weight of p1
-  float e2 = bx * ay - by * ax;  // weight of p2
-  if (e0 == 0.f || e1 == 0.f || e2 == 0.f) {
-    // On (or within rounding of) an edge: decide in double so both neighbours agree.
-    e0 = static_cast<float>(double(cx) * double(by) - double(cy) * double(bx));
-    e1 = static_cast<float>(double(ax) * double(cy) - double(ay) * double(cx));
-    e2 = static_cast<float>(double(bx) * double(ay) - double(by) * double(ax));
-  }
+  // Edge functions with exact products (a product of two floats fits in a double), so each sign
+  // is exact and a shared edge gets exactly opposite values in its two triangles. In float,
+  // `cx * by - cy * bx` is contracted to fma(cx, by, -(cy * bx)) where FMA is available (GCC's
+  // default for C++ with -march=x86-64-v3); that is not the negation of the neighbour's
+  // fma(bx, cy, -(by * cx)), and both triangles could reject a ray through their shared edge.
+  const float e0 = static_cast<float>(double(cx) * double(by) - double(cy) * double(bx));  // weight of p0
+  const float e1 = static_cast<float>(double(ax) * double(cy) - double(ay) * double(cx));  // weight of p1
+  const float e2 = static_cast<float>(double(bx) * double(ay) - double(by) * double(ax));  // weight of p2
   if ((e0 < 0.f || e1 < 0.f || e2 < 0.f) && (e0 > 0.f || e1 > 0.f || e2 > 0.f)) return false;
   const float det = e0 + e1 + e2;
   if (det == 0.f) return false;
