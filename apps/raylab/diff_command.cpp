@@ -36,7 +36,8 @@ CommandRunner add_diff_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("diff", "Compare two images (.png .exr .pfm) by RMSE in 8-bit sRGB steps");
   cmd->add_option("first", args->first, "First image")->required();
   cmd->add_option("second", args->second, "Second image")->required();
-  cmd->add_option("--max-rmse", args->max_rmse, "Exit with 1 when the RMSE exceeds this")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max-rmse", args->max_rmse, "Exit with 1 when the RMSE exceeds this")
+      ->check(CLI::NonNegativeNumber);
   return [args] { return run(*args); };
 }
 

@@ -79,8 +79,9 @@ int run(const RenderArgs& args) {
   if (bar) options.on_progress = [&bar](int done, int total) { bar->update(done, total); };
   const RenderResult result = render(scene, *accel, film, options);
   const double mrays = result.seconds > 0 ? result.stats.total_rays() / result.seconds * 1e-6 : 0.0;
-  if (bar) bar->finish(fmt::format("{}x{}, {} spp, {} rays ({:.2f} Mrays/s)", s.width, s.height, s.spp,
-                                   result.stats.total_rays(), mrays));
+  if (bar)
+    bar->finish(fmt::format("{}x{}, {} spp, {} rays ({:.2f} Mrays/s)", s.width, s.height, s.spp,
+                            result.stats.total_rays(), mrays));
   write_image(film, args.output);
   if (args.stats) print_stats(result.stats, accel->info(), result.seconds);
   if (!args.quiet) {

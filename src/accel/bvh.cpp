@@ -12,38 +12,32 @@ namespace {
 // makes the float slab test conservative, so a primitive lying on a box face is never culled.
 constexpr float kSlabWiden = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 
-// Direction components smaller than this are treated as this (its reciprocal stays finite).
-constexpr float kTinyDirection = 1e-18f;
-
-// Per-ray constants for box tests. The slab distances are computed as
-// plane * inv_dir - origin * inv_dir, one fused multiply-add per plane. Direction components of
-// zero (or nearly) are replaced by a tiny value of the same sign first: with an exact zero the
-// product would be inf - inf = NaN, and culling on that axis would be lost.
+// Per-ray constants for box tests: origin, reciprocal direction and which plane is near per axis.
+// The slab distances are (plane - origin) * inv_dir with exact IEEE infinities for zero direction
+// components. The shorter plane * inv_dir - origin * inv_dir (one FMA) was tried and rejected:
+// for a ray lying in a face plane it turns into inf - inf, and with a tiny stand-in direction the
+// rounding residual of origin * inv_dir is huge, so such rays were culled wrongly.
 struct BoxRay {
-  float inv_dir[3];
-  float origin_scaled[3];  // origin * inv_dir
+  Vec3 origin;
+  Vec3 inv_dir;
   bool negative[3];
 
-  explicit BoxRay(const Ray& ray) {
-    for (int a = 0; a < 3; ++a) {
-      float d = ray.direction[a];
-      if (std::fabs(d) < kTinyDirection) d = std::copysign(kTinyDirection, d);
-      inv_dir[a] = 1.f / d;
-      origin_scaled[a] = ray.origin[a] * inv_dir[a];
-      negative[a] = inv_dir[a] < 0.f;
-    }
+  explicit BoxRay(const Ray& ray) : origin(ray.origin), inv_dir(safe_reciprocal(ray.direction)) {
+    for (int a = 0; a < 3; ++a) negative[a] = inv_dir[a] < 0.f;
   }
 };
 
-// Entry distance into `node` if the ray's [tmin, tmax] overlaps it.
+// Entry distance into `node` if the ray's [tmin, tmax] overlaps it. NaN slabs (origin on the
+// plane of a face, direction parallel to it) are ignored by the comparison order, so boxes are
+// closed sets.
 inline bool hit_node(const BvhNode& node, const BoxRay& r, float tmin, float tmax, float& t_enter) {
   float t_near = tmin;
   float t_far = tmax;
   for (int a = 0; a < 3; ++a) {
     const float near_plane = r.negative[a] ? node.hi[a] : node.lo[a];
     const float far_plane = r.negative[a] ? node.lo[a] : node.hi[a];
-    const float t0 = std::fma(near_plane, r.inv_dir[a], -r.origin_scaled[a]);
-    const float t1 = std::fma(far_plane, r.inv_dir[a], -r.origin_scaled[a]) * kSlabWiden;
+    const float t0 = (near_plane - r.origin[a]) * r.inv_dir[a];
+    const float t1 = (far_plane - r.origin[a]) * r.inv_dir[a] * kSlabWiden;
     t_near = t0 > t_near ? t0 : t_near;
     t_far = t1 < t_far ? t1 : t_far;
   }

@@ -31,7 +31,7 @@ struct Bin {
 
 struct Split {
   int axis = -1;
-  int bin = 0;           // primitives in bins [0, bin) go left
+  int bin = 0;  // primitives in bins [0, bin) go left
   float cost = INFINITY;
 };
 
@@ -97,10 +97,12 @@ class Builder {
         const float lo = centroids.lo[split.axis];
         const float scale = m_bins / (centroids.hi[split.axis] - lo);
         auto* ids = m_tree.prim_ids.data();
-        mid = static_cast<std::uint32_t>(
-            std::partition(ids + begin, ids + end,
-                           [&](std::uint32_t id) { return bin_of(m_prims[id].centroid[split.axis], lo, scale) < split.bin; }) -
-            ids);
+        mid = static_cast<std::uint32_t>(std::partition(ids + begin, ids + end,
+                                                        [&](std::uint32_t id) {
+                                                          return bin_of(m_prims[id].centroid[split.axis], lo, scale) <
+                                                                 split.bin;
+                                                        }) -
+                                         ids);
         if (mid == begin || mid == end) mid = begin + count / 2;  // rounding put all on one side
       }
     } else {
@@ -161,10 +163,10 @@ class Builder {
         acc.extend(bins[b - 1].box);
         n += bins[b - 1].count;
         if (n == 0 || right_count[b] == 0) continue;
-        const float cost = m_config.traversal_cost +
-                           m_config.intersection_cost *
-                               (acc.area() * static_cast<float>(n) + right_area[b] * static_cast<float>(right_count[b])) /
-                               parent_area;
+        const float cost =
+            m_config.traversal_cost +
+            m_config.intersection_cost *
+                (acc.area() * static_cast<float>(n) + right_area[b] * static_cast<float>(right_count[b])) / parent_area;
         if (cost < best.cost) best = {axis, b, cost};
       }
     }

@@ -63,10 +63,14 @@ Box3 Geometry::bounds(std::uint32_t prim_id) const {
       b.extend(t.p2);
       return b;
     }
-    case ShapeKind::kSphere: return sphere_bounds(spheres[r.index]);
-    case ShapeKind::kCylinder: return cylinder_bounds(cylinders[r.index]);
-    case ShapeKind::kDisk: return disk_bounds(disks[r.index]);
-    case ShapeKind::kQuad: return quad_bounds(quads[r.index]);
+    case ShapeKind::kSphere:
+      return sphere_bounds(spheres[r.index]);
+    case ShapeKind::kCylinder:
+      return cylinder_bounds(cylinders[r.index]);
+    case ShapeKind::kDisk:
+      return disk_bounds(disks[r.index]);
+    case ShapeKind::kQuad:
+      return quad_bounds(quads[r.index]);
   }
   return {};
 }
@@ -80,11 +84,16 @@ Box3 Geometry::bounds() const {
 std::uint32_t Geometry::object_of(std::uint32_t prim_id) const {
   const ShapeRef r = resolve(prim_id);
   switch (r.kind) {
-    case ShapeKind::kTriangle: return triangle_objects[r.index];
-    case ShapeKind::kSphere: return sphere_objects[r.index];
-    case ShapeKind::kCylinder: return cylinder_objects[r.index];
-    case ShapeKind::kDisk: return disk_objects[r.index];
-    case ShapeKind::kQuad: return quad_objects[r.index];
+    case ShapeKind::kTriangle:
+      return triangle_objects[r.index];
+    case ShapeKind::kSphere:
+      return sphere_objects[r.index];
+    case ShapeKind::kCylinder:
+      return cylinder_objects[r.index];
+    case ShapeKind::kDisk:
+      return disk_objects[r.index];
+    case ShapeKind::kQuad:
+      return quad_objects[r.index];
   }
   return kInvalidId;
 }
@@ -94,11 +103,21 @@ bool Geometry::intersect(std::uint32_t prim_id, const WatertightRay& wr, Ray& ra
   float t = 0.f, u = 0.f, v = 0.f;
   bool found = false;
   switch (r.kind) {
-    case ShapeKind::kTriangle: found = intersect_triangle(triangles[r.index], wr, ray.tmin, ray.tmax, t, u, v); break;
-    case ShapeKind::kSphere: found = intersect_sphere(spheres[r.index], ray, ray.tmin, ray.tmax, t); break;
-    case ShapeKind::kCylinder: found = intersect_cylinder(cylinders[r.index], ray, ray.tmin, ray.tmax, t, v); break;
-    case ShapeKind::kDisk: found = intersect_disk(disks[r.index], ray, ray.tmin, ray.tmax, t); break;
-    case ShapeKind::kQuad: found = intersect_quad(quads[r.index], ray, ray.tmin, ray.tmax, t, u, v); break;
+    case ShapeKind::kTriangle:
+      found = intersect_triangle(triangles[r.index], wr, ray.tmin, ray.tmax, t, u, v);
+      break;
+    case ShapeKind::kSphere:
+      found = intersect_sphere(spheres[r.index], ray, ray.tmin, ray.tmax, t);
+      break;
+    case ShapeKind::kCylinder:
+      found = intersect_cylinder(cylinders[r.index], ray, ray.tmin, ray.tmax, t, v);
+      break;
+    case ShapeKind::kDisk:
+      found = intersect_disk(disks[r.index], ray, ray.tmin, ray.tmax, t);
+      break;
+    case ShapeKind::kQuad:
+      found = intersect_quad(quads[r.index], ray, ray.tmin, ray.tmax, t, u, v);
+      break;
   }
   if (!found) return false;
   ray.tmax = t;

@@ -18,7 +18,7 @@ SurfaceInteraction surface_at(const Geometry& geometry, const Ray& ray, const Hi
   SurfaceInteraction si;
   si.object_id = geometry.object_of(hit.prim_id);
   const ShapeRef ref = geometry.resolve(hit.prim_id);
-  Vec3 n_shape;              // the shape's own outward normal (unit)
+  Vec3 n_shape;                  // the shape's own outward normal (unit)
   Vec3 n_smooth{0.f, 0.f, 0.f};  // interpolated normal, when the shape has one
   switch (ref.kind) {
     case ShapeKind::kTriangle: {

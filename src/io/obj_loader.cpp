@@ -2,12 +2,15 @@
 
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "raylab/core/error.h"
+#include "raylab/geometry/polygon.h"
 
 namespace raylab {
 namespace {
@@ -16,6 +19,16 @@ struct Location {
   int line = 0;
   int col = 0;
 };
+
+// Number of whitespace-separated tokens in `text` from `pos` on.
+std::size_t count_tokens(const std::string& text, std::size_t pos) {
+  std::size_t n = 0;
+  while ((pos = text.find_first_not_of(" \t\r", pos)) != std::string::npos) {
+    ++n;
+    pos = text.find_first_of(" \t\r", pos);
+  }
+  return n;
+}
 
 // Finds where the `token_index`-th token after the keyword of the `ordinal`-th statement with
 // keyword `keyword` is. tinyobjloader keeps no positions, so a bad index found after parsing is
@@ -29,6 +42,8 @@ Location locate(const std::string& path, const std::string& keyword, std::size_t
     if (p == std::string::npos || text.compare(p, keyword.size(), keyword) != 0) continue;
     const std::size_t after = p + keyword.size();
     if (after < text.size() && !std::isspace(static_cast<unsigned char>(text[after]))) continue;
+    // tinyobjloader drops faces of fewer than 3 corners without a trace, so they do not count.
+    if (keyword == "f" && count_tokens(text, after) < 3) continue;
     if (seen++ != ordinal) continue;
     // Walk to the requested token.
     std::size_t pos = after;
@@ -43,14 +58,75 @@ Location locate(const std::string& path, const std::string& keyword, std::size_t
   return {};
 }
 
-// tinyobjloader reports "... line N ..." in some messages; keep its text but lead with file:line.
+// Column of the first corner of face statement `text` with an index of 0 (which tinyobjloader
+// rejects without saying where), or 0 if there is none.
+int zero_index_column(const std::string& text) {
+  std::size_t p = text.find_first_not_of(" \t");
+  if (p == std::string::npos || text.compare(p, 1, "f") != 0) return 0;
+  for (p += 1; (p = text.find_first_not_of(" \t\r", p)) != std::string::npos;) {
+    const std::size_t end = std::min(text.find_first_of(" \t\r", p), text.size());
+    // Each corner is v, v/vt, v//vn or v/vt/vn; any present part that reads as 0 is the culprit.
+    for (std::size_t q = p; q < end;) {
+      const std::size_t slash = std::min(text.find('/', q), end);
+      if (slash > q && std::atoi(text.substr(q, slash - q).c_str()) == 0) return static_cast<int>(p) + 1;
+      q = slash + 1;
+    }
+    p = end;
+  }
+  return 0;
+}
+
+// tinyobjloader reports "... line N ..." in some messages; keep its text but lead with file:line
+// (and the column, for the zero index it rejects in a face).
 [[noreturn]] void throw_reader_error(const std::string& path, const std::string& message) {
   int line = 0;
   const auto at = message.find("line ");
   if (at != std::string::npos) line = std::atoi(message.c_str() + at + 5);
+  if (line > 0 && message.find("`f' line") != std::string::npos) {
+    std::ifstream in(path);
+    std::string text;
+    for (int n = 1; n <= line && std::getline(in, text); ++n) {
+    }
+    if (const int col = zero_index_column(text); col > 0) {
+      throw InputError(path, line, col, "face index 0 is not valid (OBJ indices start at 1; negative ones count back)");
+    }
+  }
   std::string text = message;
   while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
   throw InputError(path, line, 0, text.empty() ? "cannot parse OBJ file" : text);
+}
+
+// Checks every vertex coordinate, in file order. tinyobjloader reads a word it cannot parse
+// ("nan", "inf", "1.5x") as 0 without complaint, so the text of each `v` statement is checked
+// here, as well as the value it gave (1e999 overflows to infinity). `values` are its coordinates.
+void check_vertex_coordinates(const std::string& path, const std::vector<tinyobj::real_t>& values) {
+  std::ifstream in(path);
+  std::string text;
+  std::size_t vertex = 0;
+  for (int line_no = 1; std::getline(in, text); ++line_no) {
+    std::size_t p = text.find_first_not_of(" \t");
+    if (p == std::string::npos || text[p] != 'v' || p + 1 >= text.size() ||
+        (text[p + 1] != ' ' && text[p + 1] != '\t')) {
+      continue;
+    }
+    p += 1;
+    for (std::size_t k = 0; k < 3; ++k) {
+      p = text.find_first_not_of(" \t\r", p);
+      if (p == std::string::npos) break;  // a missing coordinate reads as 0, as OBJ readers do
+      const std::size_t end = std::min(text.find_first_of(" \t\r", p), text.size());
+      double value = 0.0;
+      const std::size_t digits = text[p] == '+' ? p + 1 : p;  // from_chars takes no '+'; OBJ may
+      const auto [ptr, ec] = std::from_chars(text.data() + digits, text.data() + end, value);
+      const bool parsed = ptr == text.data() + end && (ec == std::errc() || ec == std::errc::result_out_of_range);
+      const std::size_t i = 3 * vertex + k;
+      if (!parsed || (ec == std::errc() && !std::isfinite(value)) || (i < values.size() && !std::isfinite(values[i]))) {
+        throw InputError(path, line_no, static_cast<int>(p) + 1,
+                         "vertex coordinate '" + text.substr(p, end - p) + "' is not a finite number");
+      }
+      p = end;
+    }
+    ++vertex;
+  }
 }
 
 }  // namespace
@@ -71,17 +147,13 @@ MeshLoadReport load_obj(const std::string& path, Scene& scene, std::uint32_t obj
   const std::size_t vertex_count = attrib.vertices.size() / 3;
   const std::size_t normal_count = attrib.normals.size() / 3;
   report.vertices = vertex_count;
-  for (std::size_t i = 0; i < attrib.vertices.size(); ++i) {
-    if (!std::isfinite(attrib.vertices[i])) {
-      const Location at = locate(path, "v", i / 3, i % 3);
-      throw InputError(path, at.line, at.col, "vertex coordinate is not a finite number");
-    }
-  }
+  check_vertex_coordinates(path, attrib.vertices);
   std::vector<Vec3> normals(normal_count);
   for (std::size_t i = 0; i < normal_count; ++i) {
     normals[i] = {attrib.normals[3 * i], attrib.normals[3 * i + 1], attrib.normals[3 * i + 2]};
     if (!is_finite(normals[i])) {
-      const Location at = locate(path, "vn", i, 0);
+      const std::size_t bad = std::isfinite(normals[i].x) ? (std::isfinite(normals[i].y) ? 2 : 1) : 0;
+      const Location at = locate(path, "vn", i, bad);
       throw InputError(path, at.line, at.col, "normal is not a finite number");
     }
   }
@@ -91,6 +163,7 @@ MeshLoadReport load_obj(const std::string& path, Scene& scene, std::uint32_t obj
 
   std::size_t face_ordinal = 0;  // faces in file order, across shapes
   std::vector<int> corners, corner_normals;
+  std::vector<Vec3> positions;  // the face's corners, for triangulate_polygon
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     std::size_t offset = 0;
     for (const unsigned char fv_raw : shape.mesh.num_face_vertices) {
@@ -122,16 +195,22 @@ MeshLoadReport load_obj(const std::string& path, Scene& scene, std::uint32_t obj
       }
       offset += fv;
       ++face_ordinal;
-      // Fan triangulation: exact for the convex polygons mesh files carry.
-      for (std::size_t k = 1; k + 1 < fv; ++k) {
-        const Triangle tri{vertex(corners[0]), vertex(corners[k]), vertex(corners[k + 1])};
+      // Ear clipping rather than a fan: a fan is wrong for the non-convex faces exporters write.
+      // Corners the triangulation leaves out (repeated, or a zero-area face) count as dropped
+      // triangles, as the fv - 2 fan triangles over them did.
+      positions.clear();
+      for (const int c : corners) positions.push_back(vertex(c));
+      const std::vector<std::array<std::uint32_t, 3>> triangles = triangulate_polygon(positions);
+      if (fv >= 3) report.degenerate_dropped += fv - 2 - triangles.size();
+      for (const auto& t : triangles) {
+        const Triangle tri{positions[t[0]], positions[t[1]], positions[t[2]]};
         if (dot(triangle_normal(tri), triangle_normal(tri)) == 0.f) {
           ++report.degenerate_dropped;
           continue;
         }
         if (all_normals) {
-          scene.geometry.add(tri, {normals[corner_normals[0]], normals[corner_normals[k]], normals[corner_normals[k + 1]]},
-                             object);
+          auto normal = [&](std::uint32_t k) { return normals[corner_normals[k]]; };
+          scene.geometry.add(tri, {normal(t[0]), normal(t[1]), normal(t[2])}, object);
         } else {
           scene.geometry.add(tri, object);
         }

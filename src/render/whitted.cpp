@@ -31,15 +31,15 @@ Color phong(const Material& m, Color base, Vec3 n, Vec3 view, Vec3 wi, Color li)
 
 // One light sample: position (or direction for directional lights) and what arrives from it.
 struct LightSample {
-  Vec3 wi;              // unit direction to the light
-  float distance;       // to the sample point (infinity for directional lights)
-  Color radiance;       // intensity share of this sample
+  Vec3 wi;         // unit direction to the light
+  float distance;  // to the sample point (infinity for directional lights)
+  Color radiance;  // intensity share of this sample
 };
 
 // Contribution of `light` at the shading point, averaging `samples` stratified positions for
 // area lights: a soft shadow is the fraction of the light's samples that the point sees.
-Color shade_light(const TraceContext& ctx, const Light& light, const Material& m, Color base, Vec3 p, Vec3 n,
-                  Vec3 ng, Vec3 view, Pcg32& rng) {
+Color shade_light(const TraceContext& ctx, const Light& light, const Material& m, Color base, Vec3 p, Vec3 n, Vec3 ng,
+                  Vec3 view, Pcg32& rng) {
   int grid = 1;
   if (light.kind == Light::Kind::kSphere || light.kind == Light::Kind::kQuad) {
     grid = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<float>(std::max(1, light.samples))))));

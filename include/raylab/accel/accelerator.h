@@ -15,13 +15,13 @@ namespace raylab {
 
 /// What a structure reports about itself after the build.
 struct AccelInfo {
-  std::string name;               ///< factory name ("bvh", "brute", ...)
-  double build_seconds = 0.0;     ///< wall-clock build time
-  std::size_t memory_bytes = 0;   ///< bytes held by the structure (nodes, references, copies)
-  std::size_t node_count = 0;     ///< nodes or cells (0 for brute force)
-  std::size_t leaf_count = 0;     ///< leaves (0 for brute force)
-  std::size_t primitive_count = 0;///< primitives indexed
-  int max_depth = 0;              ///< deepest leaf
+  std::string name;                 ///< factory name ("bvh", "brute", ...)
+  double build_seconds = 0.0;       ///< wall-clock build time
+  std::size_t memory_bytes = 0;     ///< bytes held by the structure (nodes, references, copies)
+  std::size_t node_count = 0;       ///< nodes or cells (0 for brute force)
+  std::size_t leaf_count = 0;       ///< leaves (0 for brute force)
+  std::size_t primitive_count = 0;  ///< primitives indexed
+  int max_depth = 0;                ///< deepest leaf
 };
 
 /// An acceleration structure over a Geometry. It answers closest-hit and any-hit queries for one

@@ -12,11 +12,11 @@ namespace raylab {
 
 /// Build parameters of the BVH, with the defaults used by `--accel bvh`.
 struct BvhConfig {
-  int bin_count = 16;            ///< SAH bins per axis (binned build, Wald 2007)
-  int max_leaf_size = 8;         ///< a node with more primitives is always split if it can be
-  float traversal_cost = 1.0f;   ///< SAH cost of visiting a node, relative to one primitive test
-  float intersection_cost = 1.0f;///< SAH cost of one primitive test
-  int parallel_threshold = 4096; ///< subtrees with at least this many primitives build in parallel
+  int bin_count = 16;              ///< SAH bins per axis (binned build, Wald 2007)
+  int max_leaf_size = 8;           ///< a node with more primitives is always split if it can be
+  float traversal_cost = 1.0f;     ///< SAH cost of visiting a node, relative to one primitive test
+  float intersection_cost = 1.0f;  ///< SAH cost of one primitive test
+  int parallel_threshold = 4096;   ///< subtrees with at least this many primitives build in parallel
 };
 
 /// One node, 32 bytes so two siblings share a 64-byte cache line:
@@ -38,10 +38,10 @@ static_assert(sizeof(BvhNode) == 32, "BvhNode must stay 32 bytes");
 
 /// The tree as plain data, produced by `build_bvh` and walked by the `Bvh` accelerator.
 struct BvhTree {
-  std::vector<BvhNode> nodes;            ///< root at index 0
-  std::vector<std::uint32_t> prim_ids;   ///< primitive references, leaf by leaf
-  int max_depth = 0;                     ///< depth of the deepest leaf (root = 0)
-  std::size_t leaf_count = 0;            ///< number of leaves
+  std::vector<BvhNode> nodes;           ///< root at index 0
+  std::vector<std::uint32_t> prim_ids;  ///< primitive references, leaf by leaf
+  int max_depth = 0;                    ///< depth of the deepest leaf (root = 0)
+  std::size_t leaf_count = 0;           ///< number of leaves
 };
 
 /// Builds a BVH over every primitive of `geometry` with the binned SAH, in parallel on oneTBB.

@@ -17,9 +17,15 @@ struct Box3 {
   Vec3 hi{-std::numeric_limits<float>::infinity()};
 
   /// Grows the box to contain point `p`.
-  constexpr void extend(Vec3 p) { lo = min(lo, p); hi = max(hi, p); }
+  constexpr void extend(Vec3 p) {
+    lo = min(lo, p);
+    hi = max(hi, p);
+  }
   /// Grows the box to contain box `b`.
-  constexpr void extend(const Box3& b) { lo = min(lo, b.lo); hi = max(hi, b.hi); }
+  constexpr void extend(const Box3& b) {
+    lo = min(lo, b.lo);
+    hi = max(hi, b.hi);
+  }
   /// True when the box contains no point.
   constexpr bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
   /// Edge lengths (negative components for an empty box).

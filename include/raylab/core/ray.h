@@ -30,9 +30,9 @@ static_assert(sizeof(Ray) == 32, "Ray must match the .rays record layout");
 /// data (normal, uv, material) is computed afterwards from `prim_id` (see geometry/shading.h).
 struct Hit {
   float t = std::numeric_limits<float>::infinity();  ///< ray parameter of the hit
-  std::uint32_t prim_id = kInvalidId;                 ///< global primitive index (see Geometry)
-  float u = 0.f;                                      ///< first barycentric / surface coordinate
-  float v = 0.f;                                      ///< second barycentric / surface coordinate
+  std::uint32_t prim_id = kInvalidId;                ///< global primitive index (see Geometry)
+  float u = 0.f;                                     ///< first barycentric / surface coordinate
+  float v = 0.f;                                     ///< second barycentric / surface coordinate
 
   /// True when a primitive was hit.
   constexpr bool valid() const { return prim_id != kInvalidId; }

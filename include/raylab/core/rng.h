@@ -15,8 +15,7 @@ constexpr std::uint64_t mix64(std::uint64_t z) {
 }
 
 /// Hashes up to four integers into one 64-bit seed.
-constexpr std::uint64_t hash_seed(std::uint64_t a, std::uint64_t b = 0, std::uint64_t c = 0,
-                                  std::uint64_t d = 0) {
+constexpr std::uint64_t hash_seed(std::uint64_t a, std::uint64_t b = 0, std::uint64_t c = 0, std::uint64_t d = 0) {
   std::uint64_t h = mix64(a + 0x9e3779b97f4a7c15ull);
   h = mix64(h ^ (b + 0x9e3779b97f4a7c15ull));
   h = mix64(h ^ (c + 0x9e3779b97f4a7c15ull));

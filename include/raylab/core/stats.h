@@ -9,9 +9,9 @@ namespace raylab {
 /// Traversal work counted inside accelerator kernels. Counting is a compile-time choice
 /// (`intersect_counted` / `occluded_counted`): the timed path does not touch this record.
 struct TraversalStats {
-  std::uint64_t nodes_visited = 0;   ///< interior + leaf nodes (or cells) whose box was tested
-  std::uint64_t prim_tests = 0;      ///< ray-primitive intersection tests
-  std::uint64_t hits = 0;            ///< queries that found a hit
+  std::uint64_t nodes_visited = 0;  ///< interior + leaf nodes (or cells) whose box was tested
+  std::uint64_t prim_tests = 0;     ///< ray-primitive intersection tests
+  std::uint64_t hits = 0;           ///< queries that found a hit
 
   /// Adds another record's counts to this one.
   constexpr TraversalStats& operator+=(const TraversalStats& o) {
@@ -30,8 +30,8 @@ const char* ray_kind_name(RayKind kind);
 
 /// Per-render statistics: rays by kind and traversal work by kind.
 struct RenderStats {
-  std::uint64_t rays[static_cast<int>(RayKind::kCount)] = {};       ///< rays cast, by kind
-  std::uint64_t ray_hits[static_cast<int>(RayKind::kCount)] = {};   ///< of which hit something
+  std::uint64_t rays[static_cast<int>(RayKind::kCount)] = {};      ///< rays cast, by kind
+  std::uint64_t ray_hits[static_cast<int>(RayKind::kCount)] = {};  ///< of which hit something
   TraversalStats traversal;  ///< summed over every ray (zero unless counting was enabled)
 
   /// Counts one ray of `kind`, and whether it hit.

@@ -11,12 +11,12 @@ namespace raylab {
 
 /// What shading needs to know about a hit point.
 struct SurfaceInteraction {
-  Vec3 position;         ///< hit point
-  Vec3 geometric_normal; ///< unit normal of the surface, facing the incoming ray
-  Vec3 shading_normal;   ///< unit interpolated normal, on the same side as geometric_normal
-  float u = 0.f;         ///< surface coordinate (texture space), shape-dependent
-  float v = 0.f;         ///< surface coordinate (texture space), shape-dependent
-  bool front_face = true;  ///< true when the ray hit the side the shape's own normal points to
+  Vec3 position;                         ///< hit point
+  Vec3 geometric_normal;                 ///< unit normal of the surface, facing the incoming ray
+  Vec3 shading_normal;                   ///< unit interpolated normal, on the same side as geometric_normal
+  float u = 0.f;                         ///< surface coordinate (texture space), shape-dependent
+  float v = 0.f;                         ///< surface coordinate (texture space), shape-dependent
+  bool front_face = true;                ///< true when the ray hit the side the shape's own normal points to
   std::uint32_t object_id = kInvalidId;  ///< object the primitive belongs to
 };
 

@@ -32,8 +32,14 @@ inline bool intersect_sphere(const Sphere& s, const Ray& ray, float tmin, float 
   float t0 = c / q;
   float t1 = q / a;
   if (t0 > t1) std::swap(t0, t1);
-  if (t0 >= tmin && t0 < tmax) { t = t0; return true; }
-  if (t1 >= tmin && t1 < tmax) { t = t1; return true; }
+  if (t0 >= tmin && t0 < tmax) {
+    t = t0;
+    return true;
+  }
+  if (t1 >= tmin && t1 < tmax) {
+    t = t1;
+    return true;
+  }
   return false;
 }
 

@@ -42,8 +42,8 @@ struct WatertightRay {
 /// Watertight: a ray through an edge or vertex shared by two triangles hits at least one of them
 /// (edge functions are evaluated with exact products, so their signs are exact). On a hit writes `t`
 /// and the barycentric weights `u` (of p1) and `v` (of p2).
-inline bool intersect_triangle(const Triangle& tri, const WatertightRay& wr, float tmin, float tmax,
-                               float& t, float& u, float& v) {
+inline bool intersect_triangle(const Triangle& tri, const WatertightRay& wr, float tmin, float tmax, float& t, float& u,
+                               float& v) {
   const Vec3 a = tri.p0 - wr.origin;
   const Vec3 b = tri.p1 - wr.origin;
   const Vec3 c = tri.p2 - wr.origin;

@@ -12,8 +12,8 @@ namespace raylab {
 /// Counts of what a mesh load did.
 struct MeshLoadReport {
   std::size_t vertices = 0;
-  std::size_t triangles = 0;            ///< triangles added
-  std::size_t degenerate_dropped = 0;   ///< zero-area faces counted and dropped
+  std::size_t triangles = 0;           ///< triangles added
+  std::size_t degenerate_dropped = 0;  ///< zero-area faces counted and dropped
 };
 
 /// Appends the triangles of OBJ file `path` to `scene.geometry` as object `object`. Polygons are

@@ -11,14 +11,14 @@ namespace raylab {
 /// stratified shadow rays, which gives soft shadows.
 struct Light {
   enum class Kind { kPoint, kDirectional, kSphere, kQuad } kind = Kind::kPoint;
-  Vec3 position;                  ///< point / sphere centre / quad corner
-  Vec3 direction{0.f, -1.f, 0.f}; ///< directional: direction the light travels
-  Vec3 edge_u{1.f, 0.f, 0.f};     ///< quad: first edge
-  Vec3 edge_v{0.f, 0.f, 1.f};     ///< quad: second edge
-  float radius = 0.f;             ///< sphere radius
-  Color intensity{1.f, 1.f, 1.f}; ///< colour times strength
-  bool falloff = false;           ///< divide by squared distance
-  int samples = 16;               ///< shadow rays per shading point for area lights (a square is used)
+  Vec3 position;                   ///< point / sphere centre / quad corner
+  Vec3 direction{0.f, -1.f, 0.f};  ///< directional: direction the light travels
+  Vec3 edge_u{1.f, 0.f, 0.f};      ///< quad: first edge
+  Vec3 edge_v{0.f, 0.f, 1.f};      ///< quad: second edge
+  float radius = 0.f;              ///< sphere radius
+  Color intensity{1.f, 1.f, 1.f};  ///< colour times strength
+  bool falloff = false;            ///< divide by squared distance
+  int samples = 16;                ///< shadow rays per shading point for area lights (a square is used)
 };
 
 }  // namespace raylab

@@ -18,17 +18,17 @@ struct Texture {
 /// Surface response in the spirit of Whitted (1980) and the NFF `f` line: a Phong-lit colour
 /// plus perfect mirror reflection and perfect refraction. Defaults give a matte grey.
 struct Material {
-  std::string name;                     ///< for messages and scene files
-  Color color{0.7f, 0.7f, 0.7f};        ///< base (diffuse) colour
-  float kd = 1.f;                       ///< diffuse weight
-  float ks = 0.f;                       ///< Phong specular weight (highlights from lights)
-  float shininess = 32.f;               ///< Phong exponent
-  float reflectivity = 0.f;             ///< weight of the mirror-reflected ray (NFF's Ks doubles as this)
-  float transmittance = 0.f;            ///< weight of the refracted ray
-  float ior = 1.f;                      ///< index of refraction (inside / outside)
-  Color emission{0.f, 0.f, 0.f};        ///< light emitted towards the viewer, added unshadowed
-  Texture texture;                      ///< optional procedural variation of `color`
-  bool fresnel = true;                  ///< weight reflection/refraction of dielectrics by Fresnel
+  std::string name;               ///< for messages and scene files
+  Color color{0.7f, 0.7f, 0.7f};  ///< base (diffuse) colour
+  float kd = 1.f;                 ///< diffuse weight
+  float ks = 0.f;                 ///< Phong specular weight (highlights from lights)
+  float shininess = 32.f;         ///< Phong exponent
+  float reflectivity = 0.f;       ///< weight of the mirror-reflected ray (NFF's Ks doubles as this)
+  float transmittance = 0.f;      ///< weight of the refracted ray
+  float ior = 1.f;                ///< index of refraction (inside / outside)
+  Color emission{0.f, 0.f, 0.f};  ///< light emitted towards the viewer, added unshadowed
+  Texture texture;                ///< optional procedural variation of `color`
+  bool fresnel = true;            ///< weight reflection/refraction of dielectrics by Fresnel
 };
 
 /// The diffuse colour of `m` at surface coordinates (u, v).
