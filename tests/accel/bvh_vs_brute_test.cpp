@@ -163,7 +163,8 @@ Vec3 point_on(const Geometry& g, std::uint32_t id, Sampler& s) {
     if (a + b > 1.f) a = 1.f - a, b = 1.f - b;
     return t.p0 + (t.p1 - t.p0) * a + (t.p2 - t.p0) * b;
   }
-  if (ref.kind == ShapeKind::kSphere) return g.spheres[ref.index].center + s.unit() * (0.9f * g.spheres[ref.index].radius);
+  if (ref.kind == ShapeKind::kSphere)
+    return g.spheres[ref.index].center + s.unit() * (0.9f * g.spheres[ref.index].radius);
   const Box3 box = g.bounds(id);
   return s.in_box(box.lo, box.hi);
 }
@@ -192,9 +193,7 @@ std::vector<Ray> random_rays(const Geometry& g, Sampler& s, int count) {
   return rays;
 }
 
-bool same_hit(const Hit& a, const Hit& b) {
-  return a.t == b.t && a.prim_id == b.prim_id && a.u == b.u && a.v == b.v;
-}
+bool same_hit(const Hit& a, const Hit& b) { return a.t == b.t && a.prim_id == b.prim_id && a.u == b.u && a.v == b.v; }
 
 // Compares every query of `bvh` with `brute` on `rays`; reports the first few failures in detail.
 void compare(const Geometry& g, const Accelerator& bvh, const Accelerator& brute, const std::vector<Ray>& rays,
@@ -364,8 +363,10 @@ TEST(BvhVsBrute, ClosedMeshRaysThroughEdgesAndVertices) {
       Ray rv{o, 0.f, target - o}, rb = rv;  // target at t = 1, the only crossing of the surface
       Hit hv, hb;
       const bool fv = bvh.intersect(rv, hv), fb = brute.intersect(rb, hb);
-      if (!fv || !fb || std::fabs(hv.t - 1.f) > 1e-4f || std::fabs(hb.t - 1.f) > 1e-4f || !bvh.occluded(Ray{o, 0.f, target - o})) {
-        if (++failures <= 5) ADD_FAILURE() << "leak through triangle " << i << " feature " << k << " bvh " << fv << " brute " << fb;
+      if (!fv || !fb || std::fabs(hv.t - 1.f) > 1e-4f || std::fabs(hb.t - 1.f) > 1e-4f ||
+          !bvh.occluded(Ray{o, 0.f, target - o})) {
+        if (++failures <= 5)
+          ADD_FAILURE() << "leak through triangle " << i << " feature " << k << " bvh " << fv << " brute " << fb;
       }
     }
   }
@@ -405,8 +406,8 @@ TEST(BvhVsBrute, RaysInFacePlanes) {
 
 // Build parameters other than the defaults must give the same answers.
 TEST(BvhVsBrute, OtherBuildConfigs) {
-  for (const BvhConfig config : {BvhConfig{2, 1, 1.f, 1.f, 4096}, BvhConfig{64, 32, 0.5f, 2.f, 4096},
-                                 BvhConfig{16, 4, 1.f, 1.f, 64}}) {
+  for (const BvhConfig config :
+       {BvhConfig{2, 1, 1.f, 1.f, 4096}, BvhConfig{64, 32, 0.5f, 2.f, 4096}, BvhConfig{16, 4, 1.f, 1.f, 64}}) {
     Sampler s(7);
     const Geometry g = every_shape_kind(s);
     const Bvh bvh(g, config);
@@ -473,8 +474,8 @@ TEST(BvhSah, CostOfHandBuiltTrees) {
   one_leaf.nodes.push_back(BvhNode{{0.f, 0.f, 0.f}, 0, {1.f, 1.f, 1.f}, 10});
   EXPECT_DOUBLE_EQ(sah_cost(one_leaf), 10.0);  // 10 primitive tests, always
   BvhTree split;
-  split.nodes = {BvhNode{{0.f, 0.f, 0.f}, 1, {2.f, 1.f, 1.f}, 0},  // root: area 10
-                 BvhNode{{0.f, 0.f, 0.f}, 0, {1.f, 1.f, 1.f}, 4},  // area 6, 4 prims
+  split.nodes = {BvhNode{{0.f, 0.f, 0.f}, 1, {2.f, 1.f, 1.f}, 0},   // root: area 10
+                 BvhNode{{0.f, 0.f, 0.f}, 0, {1.f, 1.f, 1.f}, 4},   // area 6, 4 prims
                  BvhNode{{1.f, 0.f, 0.f}, 4, {2.f, 1.f, 1.f}, 6}};  // area 6, 6 prims
   EXPECT_DOUBLE_EQ(sah_cost(split), 1.0 + 0.6 * 4 + 0.6 * 6);
   EXPECT_DOUBLE_EQ(sah_cost(split, BvhConfig{16, 8, 2.f, 0.5f, 4096}), 2.0 + 0.5 * (0.6 * 4 + 0.6 * 6));

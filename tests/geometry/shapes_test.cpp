@@ -164,11 +164,11 @@ Mesh octahedron() {
 Mesh icosphere(int levels, Vec3 c, float r) {
   const float p = (1.f + std::sqrt(5.f)) / 2.f;
   Mesh m;
-  m.v = {{-1, p, 0}, {1, p, 0}, {-1, -p, 0}, {1, -p, 0}, {0, -1, p}, {0, 1, p},
-         {0, -1, -p}, {0, 1, -p}, {p, 0, -1}, {p, 0, 1}, {-p, 0, -1}, {-p, 0, 1}};
-  m.f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-         {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-         {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  m.v = {{-1, p, 0},  {1, p, 0},  {-1, -p, 0}, {1, -p, 0}, {0, -1, p},  {0, 1, p},
+         {0, -1, -p}, {0, 1, -p}, {p, 0, -1},  {p, 0, 1},  {-p, 0, -1}, {-p, 0, 1}};
+  m.f = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+         {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+         {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   for (auto& x : m.v) x = normalize(x);
   for (int l = 0; l < levels; ++l) {
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
@@ -315,7 +315,7 @@ TEST(Cylinder, PerpendicularRayHitsAtDistanceMinusRadius) {
   EXPECT_FLOAT_EQ(h, 0.5f);
   // A tilted axis and a general direction, against the closed-form distance to the axis line.
   const Cylinder tilted{{1.f, 2.f, 3.f}, 0.5f, {4.f, 6.f, 3.f}, 0.5f};  // axis along (0.6, 0.8, 0)
-  const Vec3 foot{2.5f, 4.f, 3.f};                                       // on the axis, halfway
+  const Vec3 foot{2.5f, 4.f, 3.f};                                      // on the axis, halfway
   ASSERT_TRUE(intersect_cylinder(tilted, Ray{foot + Vec3{0.f, 0.f, 10.f}, 0.f, {0.f, 0.f, -1.f}}, 0.f, kInf, t, h));
   EXPECT_FLOAT_EQ(t, 9.5f);
   EXPECT_NEAR(h, 0.5f, 1e-6f);
@@ -423,8 +423,10 @@ TEST(SurfaceAt, UnitNormalsFacingTheRayAndPointsOnTheSurface) {
   auto distance_to_surface = [&](std::uint32_t id, Vec3 p) -> float {
     const ShapeRef r = g.resolve(id);
     switch (r.kind) {
-      case ShapeKind::kTriangle: return dot(p - tri.p0, normalize(triangle_normal(tri)));
-      case ShapeKind::kSphere: return length(p - g.spheres[0].center) - g.spheres[0].radius;
+      case ShapeKind::kTriangle:
+        return dot(p - tri.p0, normalize(triangle_normal(tri)));
+      case ShapeKind::kSphere:
+        return length(p - g.spheres[0].center) - g.spheres[0].radius;
       case ShapeKind::kCylinder: {
         const Cylinder& c = g.cylinders[r.index];
         const Vec3 w = normalize(c.apex - c.base);
@@ -432,8 +434,10 @@ TEST(SurfaceAt, UnitNormalsFacingTheRayAndPointsOnTheSurface) {
         const float radius = c.base_radius + (c.apex_radius - c.base_radius) * s / length(c.apex - c.base);
         return length(p - c.base - w * s) - radius;
       }
-      case ShapeKind::kDisk: return dot(p - g.disks[0].center, g.disks[0].normal);
-      case ShapeKind::kQuad: return dot(p - g.quads[0].corner, normalize(cross(g.quads[0].edge_u, g.quads[0].edge_v)));
+      case ShapeKind::kDisk:
+        return dot(p - g.disks[0].center, g.disks[0].normal);
+      case ShapeKind::kQuad:
+        return dot(p - g.quads[0].corner, normalize(cross(g.quads[0].edge_u, g.quads[0].edge_v)));
     }
     return kInf;
   };
