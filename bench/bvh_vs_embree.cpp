@@ -1,7 +1,7 @@
 /// \file
 /// bvh_vs_embree: raylab's BVH against Embree 3 on one OBJ mesh, single rays only.
 ///
-///   bvh_vs_embree MESH.obj [--width 1024] [--height 768] [--repeats 5] [--threads 1] [--json FILE]
+///   bvh_vs_embree MESH.obj [--accel bvh|bvh2] [--width 1024] [--height 768] [--repeats 5] [--threads 1] [--json FILE]
 ///
 /// Builds both structures over the same triangles, checks that their primary hits agree, then times
 /// primary and shadow rays interleaved (ours, Embree, ours, ...) so that clock or thermal drift hits
@@ -29,7 +29,7 @@
 #include <utility>
 #include <vector>
 
-#include "raylab/accel/bvh.h"
+#include "raylab/accel/factory.h"
 #include "raylab/io/obj_loader.h"
 #include "raylab/io/scene_loader.h"
 #include "raylab/render/camera.h"
@@ -48,12 +48,13 @@ constexpr double kRelTol = 1e-4;  // relative tolerance on t between the two str
 
 struct Options {
   std::string mesh, json;
+  std::string accel = "bvh";  // raylab structure to compare, by factory name
   int width = 1024, height = 768, repeats = 5, threads = 1;
 };
 
 [[noreturn]] void usage_error(const std::string& message) {
   fmt::print(stderr, "bvh_vs_embree: {}\nusage: bvh_vs_embree MESH.obj [--width 1024] [--height 768] ", message);
-  fmt::print(stderr, "[--repeats 5] [--threads 1] [--json FILE]\n");
+  fmt::print(stderr, "[--repeats 5] [--threads 1] [--accel bvh|bvh2] [--json FILE]\n");
   std::exit(2);
 }
 
@@ -73,6 +74,9 @@ Options parse_args(int argc, char** argv) {
       usage_error(arg + " needs a value");
     } else if (arg == "--json") {
       o.json = argv[++i];
+    } else if (arg == "--accel") {
+      o.accel = argv[++i];
+      if (o.accel != "bvh" && o.accel != "bvh2") usage_error("--accel wants bvh or bvh2, not '" + o.accel + "'");
     } else if (!number) {
       usage_error("unknown option " + arg);
     } else {
@@ -304,11 +308,11 @@ int run(const Options& opt) {
   // Builds, alternating like the traces; the last of each is kept for tracing. Each side frees its
   // previous build first, so neither builds with the other's garbage in the allocator.
   const EmbreeMesh mesh(geometry.triangles);
-  std::unique_ptr<raylab::Bvh> bvh;
+  std::unique_ptr<raylab::Accelerator> bvh;
   RTCScene escene = nullptr;
   long long embree_bytes = 0;
   const auto [ours_build, embree_build] = time_interleaved(
-      opt.repeats, [&] { bvh = nullptr, bvh = std::make_unique<raylab::Bvh>(geometry); },
+      opt.repeats, [&] { bvh = nullptr, bvh = raylab::make_accelerator(opt.accel, geometry); },
       [&] {
         if (escene) rtcReleaseScene(escene);
         embree_allocated = 0;  // after the release: only this build's bytes count

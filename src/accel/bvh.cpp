@@ -6,41 +6,60 @@
 #include "raylab/accel/bvh.h"
 
 namespace raylab {
+
+// Per-ray constants for box tests: origin and reciprocal direction. The slab distances are
+// (plane - origin) * inv_dir with exact IEEE infinities for zero direction components. (The
+// one-FMA form plane * inv_dir - origin * inv_dir was tried and rejected: for a ray lying in a
+// face plane it becomes inf - inf, and with a tiny stand-in direction the rounding residual of
+// origin * inv_dir culls such rays wrongly; tests/accel/bvh_vs_brute_test.cpp catches it.)
+struct BvhBoxRay {
+  float ox, oy, oz;
+  float ix, iy, iz;
+
+  explicit BvhBoxRay(const Ray& ray)
+      : ox(ray.origin.x),
+        oy(ray.origin.y),
+        oz(ray.origin.z),
+        ix(1.f / ray.direction.x),
+        iy(1.f / ray.direction.y),
+        iz(1.f / ray.direction.z) {}
+};
+
 namespace {
 
 // Slab factor of Ize (2013) as used by pbrt: widening the exit distance by 1 + 2 * gamma(3)
 // makes the float slab test conservative, so a primitive lying on a box face is never culled.
 constexpr float kSlabWiden = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 
-// Per-ray constants for box tests: origin, reciprocal direction and which plane is near per axis.
-// The slab distances are (plane - origin) * inv_dir with exact IEEE infinities for zero direction
-// components. The shorter plane * inv_dir - origin * inv_dir (one FMA) was tried and rejected:
-// for a ray lying in a face plane it turns into inf - inf, and with a tiny stand-in direction the
-// rounding residual of origin * inv_dir is huge, so such rays were culled wrongly.
-struct BoxRay {
-  Vec3 origin;
-  Vec3 inv_dir;
-  bool negative[3];
+// The direction octant: bit a is set when the direction's component a is negative (or -0, whose
+// reciprocal is -inf). It decides, per axis, which of a box's two planes the ray meets first.
+inline int octant_of(const BvhBoxRay& r) {
+  return (std::signbit(r.ix) ? 1 : 0) | (std::signbit(r.iy) ? 2 : 0) | (std::signbit(r.iz) ? 4 : 0);
+}
 
-  explicit BoxRay(const Ray& ray) : origin(ray.origin), inv_dir(safe_reciprocal(ray.direction)) {
-    for (int a = 0; a < 3; ++a) negative[a] = inv_dir[a] < 0.f;
-  }
-};
-
-// Entry distance into `node` if the ray's [tmin, tmax] overlaps it. NaN slabs (origin on the
-// plane of a face, direction parallel to it) are ignored by the comparison order, so boxes are
-// closed sets.
-inline bool hit_node(const BvhNode& node, const BoxRay& r, float tmin, float tmax, float& t_enter) {
+// Entry distance into `node` if the ray's [tmin, tmax] overlaps it, for rays in octant kOctant
+// (near and far planes chosen at compile time). NaN slabs (origin on the plane of a face,
+// direction parallel to it) are ignored by the comparison order, so boxes are closed sets. The
+// exit distance is widened once, after the minimum (scaling by a positive factor is monotonic).
+template <int kOctant>
+inline bool hit_node(const BvhNode& node, const BvhBoxRay& r, float tmin, float tmax, float& t_enter) {
+  constexpr bool kNegX = (kOctant & 1) != 0, kNegY = (kOctant & 2) != 0, kNegZ = (kOctant & 4) != 0;
+  const float tx0 = ((kNegX ? node.hi[0] : node.lo[0]) - r.ox) * r.ix;
+  const float tx1 = ((kNegX ? node.lo[0] : node.hi[0]) - r.ox) * r.ix;
+  const float ty0 = ((kNegY ? node.hi[1] : node.lo[1]) - r.oy) * r.iy;
+  const float ty1 = ((kNegY ? node.lo[1] : node.hi[1]) - r.oy) * r.iy;
+  const float tz0 = ((kNegZ ? node.hi[2] : node.lo[2]) - r.oz) * r.iz;
+  const float tz1 = ((kNegZ ? node.lo[2] : node.hi[2]) - r.oz) * r.iz;
   float t_near = tmin;
-  float t_far = tmax;
-  for (int a = 0; a < 3; ++a) {
-    const float near_plane = r.negative[a] ? node.hi[a] : node.lo[a];
-    const float far_plane = r.negative[a] ? node.lo[a] : node.hi[a];
-    const float t0 = (near_plane - r.origin[a]) * r.inv_dir[a];
-    const float t1 = (far_plane - r.origin[a]) * r.inv_dir[a] * kSlabWiden;
-    t_near = t0 > t_near ? t0 : t_near;
-    t_far = t1 < t_far ? t1 : t_far;
-  }
+  t_near = tx0 > t_near ? tx0 : t_near;
+  t_near = ty0 > t_near ? ty0 : t_near;
+  t_near = tz0 > t_near ? tz0 : t_near;
+  float t_far = INFINITY;
+  t_far = tx1 < t_far ? tx1 : t_far;
+  t_far = ty1 < t_far ? ty1 : t_far;
+  t_far = tz1 < t_far ? tz1 : t_far;
+  t_far *= kSlabWiden;
+  t_far = t_far < tmax ? t_far : tmax;
   t_enter = t_near;
   return t_near <= t_far;
 }
@@ -73,86 +92,119 @@ Box3 Bvh::bounds() const {
 template <bool kAnyHit, bool kCount>
 bool Bvh::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   if (m_tree.prim_ids.empty()) return false;
-  const BvhNode* nodes = m_tree.nodes.data();
-  const BoxRay box_ray(ray);
-  const WatertightRay tri_ray(ray);
-  float t_root = 0.f;
-  if constexpr (kCount) ++stats->nodes_visited;
-  if (!hit_node(nodes[0], box_ray, ray.tmin, ray.tmax, t_root)) return false;
+  const BvhBoxRay box_ray(ray);
+  switch (octant_of(box_ray)) {
+    case 0:
+      return traverse_octant<kAnyHit, kCount, 0>(ray, box_ray, hit, stats);
+    case 1:
+      return traverse_octant<kAnyHit, kCount, 1>(ray, box_ray, hit, stats);
+    case 2:
+      return traverse_octant<kAnyHit, kCount, 2>(ray, box_ray, hit, stats);
+    case 3:
+      return traverse_octant<kAnyHit, kCount, 3>(ray, box_ray, hit, stats);
+    case 4:
+      return traverse_octant<kAnyHit, kCount, 4>(ray, box_ray, hit, stats);
+    case 5:
+      return traverse_octant<kAnyHit, kCount, 5>(ray, box_ray, hit, stats);
+    case 6:
+      return traverse_octant<kAnyHit, kCount, 6>(ray, box_ray, hit, stats);
+    default:
+      return traverse_octant<kAnyHit, kCount, 7>(ray, box_ray, hit, stats);
+  }
+}
 
-  StackEntry stack[kStackSize];
-  int sp = 0;
-  std::uint32_t current = 0;
+template <bool kAnyHit, bool kCount, int kOctant>
+bool Bvh::traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, TraversalStats* stats) const {
+  // Everything the loop touches lives in locals: stores through `ray` and `hit` inside the loop
+  // would force the compiler to reload node and array pointers after each one (they may alias).
+  const BvhNode* const nodes = m_tree.nodes.data();
+  const std::uint32_t* const prim_ids = m_tree.prim_ids.data();
+  const Triangle* const triangles = m_leaf_triangles.data();
+  const std::uint32_t triangle_count = m_triangle_count;
+  const float tmin = ray.tmin;
+  float tmax = ray.tmax;
+  Hit best = hit;
+  std::uint64_t nodes_visited = 1, prim_tests = 0;
+
+  float t_root = 0.f;
   bool found = false;
-  for (;;) {
-    const BvhNode& node = nodes[current];
-    if (node.is_leaf()) {
-      const std::uint32_t end = node.first + node.count;
-      for (std::uint32_t i = node.first; i < end; ++i) {
-        const std::uint32_t id = m_tree.prim_ids[i];
-        if constexpr (kCount) ++stats->prim_tests;
-        bool hit_here;
-        if (id < m_triangle_count) {
-          float t, u, v;
-          hit_here = intersect_triangle(m_leaf_triangles[i], tri_ray, ray.tmin, ray.tmax, t, u, v);
-          if (hit_here) {
-            ray.tmax = t;
-            hit.t = t;
-            hit.prim_id = id;
-            hit.u = u;
-            hit.v = v;
-          }
-        } else {
-          hit_here = m_geometry.intersect(id, tri_ray, ray, hit);
-        }
-        if (hit_here) {
-          found = true;
-          if constexpr (kAnyHit) {
-            if constexpr (kCount) ++stats->hits;
-            return true;
-          }
-        }
-      }
-    } else {
-      const std::uint32_t left = node.first;
-      float t_left = 0.f, t_right = 0.f;
-      if constexpr (kCount) stats->nodes_visited += 2;
-      const bool hit_left = hit_node(nodes[left], box_ray, ray.tmin, ray.tmax, t_left);
-      const bool hit_right = hit_node(nodes[left + 1], box_ray, ray.tmin, ray.tmax, t_right);
-      if (hit_left && hit_right) {
-        // Visit the nearer child first; the farther one waits with its entry distance, so it
-        // can be skipped if a closer hit is found meanwhile.
-        if (t_right < t_left) {
-          stack[sp++] = {left, t_left};
-          current = left + 1;
-        } else {
-          stack[sp++] = {left + 1, t_right};
-          current = left;
-        }
-        continue;
-      }
-      if (hit_left) {
-        current = left;
-        continue;
-      }
-      if (hit_right) {
-        current = left + 1;
-        continue;
-      }
-    }
-    // Pop the next subtree that can still hold a closer hit.
+  if (hit_node<kOctant>(nodes[0], box_ray, tmin, tmax, t_root)) {
+    // Only rays that enter the tree need the triangle test's constants (most rays of a typical
+    // image miss everything, and for them the root test is the whole cost).
+    const WatertightRay tri_ray(ray);
+    StackEntry stack[kStackSize];
+    int sp = 0;
+    std::uint32_t current = 0;
     for (;;) {
-      if (sp == 0) {
-        if constexpr (kCount) stats->hits += found ? 1 : 0;
-        return found;
+      const BvhNode& node = nodes[current];
+      if (node.is_leaf()) {
+        const std::uint32_t end = node.first + node.count;
+        for (std::uint32_t i = node.first; i < end; ++i) {
+          const std::uint32_t id = prim_ids[i];
+          if constexpr (kCount) ++prim_tests;
+          bool hit_here;
+          if (id < triangle_count) {
+            float t, u, v;
+            hit_here = intersect_triangle(triangles[i], tri_ray, tmin, tmax, t, u, v);
+            if (hit_here) {
+              tmax = t;
+              best = {t, id, u, v};
+            }
+          } else {
+            Ray probe = ray;
+            probe.tmax = tmax;
+            hit_here = m_geometry.intersect(id, tri_ray, probe, best);
+            tmax = probe.tmax;
+          }
+          if (hit_here) {
+            found = true;
+            if constexpr (kAnyHit) goto done;
+          }
+        }
+      } else {
+        const std::uint32_t left = node.first;
+        float t_left = 0.f, t_right = 0.f;
+        if constexpr (kCount) nodes_visited += 2;
+        // Both children are tested one after the other in scalar code. A two-box SIMD test
+        // (both 32-byte siblings in one 256-bit pair of loads) was measured slower: this loop is
+        // bound by the latency from node load to branch, and the lane shuffles lengthen it.
+        const bool hit_left = hit_node<kOctant>(nodes[left], box_ray, tmin, tmax, t_left);
+        const bool hit_right = hit_node<kOctant>(nodes[left + 1], box_ray, tmin, tmax, t_right);
+        if (hit_left && hit_right) {
+          // Visit the nearer child first; the farther one waits with its entry distance, so it
+          // can be skipped if a closer hit is found meanwhile.
+          const bool right_first = t_right < t_left;
+          stack[sp++] = right_first ? StackEntry{left, t_left} : StackEntry{left + 1, t_right};
+          current = right_first ? left + 1 : left;
+          continue;
+        }
+        if (hit_left | hit_right) {
+          current = hit_left ? left : left + 1;
+          continue;
+        }
       }
-      const StackEntry e = stack[--sp];
-      if (kAnyHit || e.t_enter <= ray.tmax) {
-        current = e.node;
-        break;
+      // Pop the next subtree that can still hold a closer hit.
+      for (;;) {
+        if (sp == 0) goto done;
+        const StackEntry e = stack[--sp];
+        if (kAnyHit || e.t_enter <= tmax) {
+          current = e.node;
+          break;
+        }
       }
     }
   }
+done:
+  if constexpr (kCount) {
+    stats->nodes_visited += nodes_visited;
+    stats->prim_tests += prim_tests;
+    stats->hits += found ? 1 : 0;
+  }
+  if (found) {
+    ray.tmax = tmax;
+    hit = best;
+  }
+  return found;
 }
 
 template <bool kCount>
@@ -176,7 +228,7 @@ bool Bvh::occluded_counted(const Ray& ray, TraversalStats& stats) const { return
 
 AccelInfo Bvh::info() const {
   AccelInfo info;
-  info.name = "bvh";
+  info.name = "bvh2";
   info.build_seconds = m_build_seconds;
   info.memory_bytes = m_tree.nodes.size() * sizeof(BvhNode) + m_tree.prim_ids.size() * sizeof(std::uint32_t) +
                       m_leaf_triangles.size() * sizeof(Triangle);

@@ -186,7 +186,7 @@ class Builder {
 // Rewrites the nodes in depth-first order, siblings kept adjacent: the parallel build hands out
 // node slots in whatever order tasks ran, and traversal is faster when a subtree is contiguous.
 void relayout_depth_first(BvhTree& tree) {
-  std::vector<BvhNode> out;
+  decltype(tree.nodes) out;
   out.reserve(tree.nodes.size());
   out.push_back(tree.nodes[0]);
   // (old index, new index) pairs still to copy children for.

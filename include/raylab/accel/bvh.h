@@ -2,7 +2,9 @@
 /// \file
 /// Binary bounding volume hierarchy: flattened 32-byte nodes, SAH-built, distance-ordered traversal.
 
+#include <cstddef>
 #include <cstdint>
+#include <new>
 #include <vector>
 
 #include "raylab/accel/accelerator.h"
@@ -51,6 +53,9 @@ BvhTree build_bvh(const Geometry& geometry, const BvhConfig& config = {});
 /// weighted by surface area relative to the root): used to compare builds.
 double sah_cost(const BvhTree& tree, const BvhConfig& config = {});
 
+/// Per-ray constants of the box test (origin, reciprocal direction); defined in bvh.cpp.
+struct BvhBoxRay;
+
 /// The BVH accelerator. Triangles referenced by leaves are copied in leaf order, so a leaf's
 /// triangles are contiguous in memory; other shapes are tested through the Geometry.
 class Bvh final : public Accelerator {
@@ -77,6 +82,8 @@ class Bvh final : public Accelerator {
   bool occluded_impl(const Ray& ray, TraversalStats* stats) const;
   template <bool kAnyHit, bool kCount>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
+  template <bool kAnyHit, bool kCount, int kOctant>
+  bool traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, TraversalStats* stats) const;
 
   const Geometry& m_geometry;
   BvhTree m_tree;

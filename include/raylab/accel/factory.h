@@ -15,7 +15,7 @@ namespace raylab {
 
 /// Parameters for every structure the factory can make; each reads only its own part.
 struct AccelConfig {
-  BvhConfig bvh;  ///< used by "bvh"
+  BvhConfig bvh;  ///< used by "bvh" (4-wide) and "bvh2" (binary)
 };
 
 /// Names the factory accepts, in the order they are listed to users.
