@@ -138,8 +138,9 @@ bool Bvh4::traverse_octant(Ray& ray, Hit& hit, TraversalStats* stats) const {
       }
     }
     if (n > 0) {
-      // Insertion sort, farthest first, so the nearest ends up on top of the stack.
-      for (int a = 1; a < n; ++a) {
+      // Insertion sort, farthest first, so the nearest ends up on top of the stack. Any-hit
+      // queries skip it: any occluder will do, so the order buys nothing.
+      for (int a = 1; !kAnyHit && a < n; ++a) {
         for (int b = a; b > 0 && next_t[b - 1] < next_t[b]; --b) {
           std::swap(next_t[b - 1], next_t[b]);
           std::swap(next[b - 1], next[b]);
