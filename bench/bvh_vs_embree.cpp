@@ -369,7 +369,7 @@ int run(const Options& opt) {
       {"bytes_per_triangle", "bytes/triangle", double(bvh->info().memory_bytes) / tris, embree_bytes / tris},
       {"primary_mrays_s", "primary Mrays/s", n / ours_primary / 1e6, n / embree_primary / 1e6},
       {"shadow_mrays_s", "shadow Mrays/s", ns / ours_shadow / 1e6, ns / embree_shadow / 1e6}};
-  fmt::print("{:<20}{:>12}{:>12}{:>14}\n", "", "raylab bvh", "embree 3", "ours/embree");
+  fmt::print("{:<20}{:>12}{:>12}{:>14}\n", "", "raylab " + opt.accel, "embree 3", "ours/embree");
   for (const Figure& f : figures)
     fmt::print("{:<20}{:>12.2f}{:>12.2f}{:>14.3f}\n", f.label, f.ours, f.embree, f.ours / f.embree);
 
