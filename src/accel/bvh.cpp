@@ -5,6 +5,8 @@
 
 #include "raylab/accel/bvh.h"
 
+#include "traversal_common.h"
+
 namespace raylab {
 
 // Per-ray constants for box tests: origin and reciprocal direction. The slab distances are
@@ -30,12 +32,6 @@ namespace {
 // Slab factor of Ize (2013) as used by pbrt: widening the exit distance by 1 + 2 * gamma(3)
 // makes the float slab test conservative, so a primitive lying on a box face is never culled.
 constexpr float kSlabWiden = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
-
-// The direction octant: bit a is set when the direction's component a is negative (or -0, whose
-// reciprocal is -inf). It decides, per axis, which of a box's two planes the ray meets first.
-inline int octant_of(const BvhBoxRay& r) {
-  return (std::signbit(r.ix) ? 1 : 0) | (std::signbit(r.iy) ? 2 : 0) | (std::signbit(r.iz) ? 4 : 0);
-}
 
 // Entry distance into `node` if the ray's [tmin, tmax] overlaps it, for rays in octant kOctant
 // (near and far planes chosen at compile time). NaN slabs (origin on the plane of a face,
@@ -76,11 +72,7 @@ Bvh::Bvh(const Geometry& geometry, const BvhConfig& config) : m_geometry(geometr
   const auto start = std::chrono::steady_clock::now();
   m_tree = build_bvh(geometry, config);
   m_triangle_count = static_cast<std::uint32_t>(geometry.triangles.size());
-  m_leaf_triangles.resize(m_tree.prim_ids.size());
-  for (std::size_t i = 0; i < m_tree.prim_ids.size(); ++i) {
-    const std::uint32_t id = m_tree.prim_ids[i];
-    if (id < m_triangle_count) m_leaf_triangles[i] = geometry.triangles[id];
-  }
+  m_leaf_triangles = triangles_in_leaf_order(geometry, m_tree.prim_ids);
   m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -93,24 +85,9 @@ template <bool kAnyHit, bool kCount>
 bool Bvh::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   if (m_tree.prim_ids.empty()) return false;
   const BvhBoxRay box_ray(ray);
-  switch (octant_of(box_ray)) {
-    case 0:
-      return traverse_octant<kAnyHit, kCount, 0>(ray, box_ray, hit, stats);
-    case 1:
-      return traverse_octant<kAnyHit, kCount, 1>(ray, box_ray, hit, stats);
-    case 2:
-      return traverse_octant<kAnyHit, kCount, 2>(ray, box_ray, hit, stats);
-    case 3:
-      return traverse_octant<kAnyHit, kCount, 3>(ray, box_ray, hit, stats);
-    case 4:
-      return traverse_octant<kAnyHit, kCount, 4>(ray, box_ray, hit, stats);
-    case 5:
-      return traverse_octant<kAnyHit, kCount, 5>(ray, box_ray, hit, stats);
-    case 6:
-      return traverse_octant<kAnyHit, kCount, 6>(ray, box_ray, hit, stats);
-    default:
-      return traverse_octant<kAnyHit, kCount, 7>(ray, box_ray, hit, stats);
-  }
+  return dispatch_octant(direction_octant(ray.direction), [&](auto octant) {
+    return traverse_octant<kAnyHit, kCount, decltype(octant)::value>(ray, box_ray, hit, stats);
+  });
 }
 
 template <bool kAnyHit, bool kCount, int kOctant>
@@ -118,9 +95,7 @@ bool Bvh::traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, Traversa
   // Everything the loop touches lives in locals: stores through `ray` and `hit` inside the loop
   // would force the compiler to reload node and array pointers after each one (they may alias).
   const BvhNode* const nodes = m_tree.nodes.data();
-  const std::uint32_t* const prim_ids = m_tree.prim_ids.data();
-  const Triangle* const triangles = m_leaf_triangles.data();
-  const std::uint32_t triangle_count = m_triangle_count;
+  const LeafPrimitives leaf{m_tree.prim_ids.data(), m_leaf_triangles.data(), m_triangle_count, &m_geometry};
   const float tmin = ray.tmin;
   float tmax = ray.tmax;
   Hit best = hit;
@@ -138,28 +113,9 @@ bool Bvh::traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, Traversa
     for (;;) {
       const BvhNode& node = nodes[current];
       if (node.is_leaf()) {
-        const std::uint32_t end = node.first + node.count;
-        for (std::uint32_t i = node.first; i < end; ++i) {
-          const std::uint32_t id = prim_ids[i];
-          if constexpr (kCount) ++prim_tests;
-          bool hit_here;
-          if (id < triangle_count) {
-            float t, u, v;
-            hit_here = intersect_triangle(triangles[i], tri_ray, tmin, tmax, t, u, v);
-            if (hit_here) {
-              tmax = t;
-              best = {t, id, u, v};
-            }
-          } else {
-            Ray probe = ray;
-            probe.tmax = tmax;
-            hit_here = m_geometry.intersect(id, tri_ray, probe, best);
-            tmax = probe.tmax;
-          }
-          if (hit_here) {
-            found = true;
-            if constexpr (kAnyHit) goto done;
-          }
+        if (intersect_leaf<kAnyHit, kCount>(leaf, node.first, node.count, tri_ray, ray, tmin, tmax, best, prim_tests)) {
+          found = true;
+          if constexpr (kAnyHit) goto done;
         }
       } else {
         const std::uint32_t left = node.first;
@@ -195,16 +151,7 @@ bool Bvh::traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, Traversa
     }
   }
 done:
-  if constexpr (kCount) {
-    stats->nodes_visited += nodes_visited;
-    stats->prim_tests += prim_tests;
-    stats->hits += found ? 1 : 0;
-  }
-  if (found) {
-    ray.tmax = tmax;
-    hit = best;
-  }
-  return found;
+  return finish_traversal<kCount>(found, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
 }
 
 template <bool kCount>

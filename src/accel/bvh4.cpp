@@ -6,8 +6,8 @@
 #include <chrono>
 #include <cmath>
 
-#include "leaf_intersect.h"
 #include "raylab/simd/float4.h"
+#include "traversal_common.h"
 
 namespace raylab {
 namespace {
@@ -55,26 +55,9 @@ Bvh4::Bvh4(const Geometry& geometry, const BvhConfig& config) : m_geometry(geome
 template <bool kAnyHit, bool kCount>
 bool Bvh4::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   if (m_prim_ids.empty()) return false;
-  const int octant = (std::signbit(ray.direction.x) ? 1 : 0) | (std::signbit(ray.direction.y) ? 2 : 0) |
-                     (std::signbit(ray.direction.z) ? 4 : 0);
-  switch (octant) {
-    case 0:
-      return traverse_octant<kAnyHit, kCount, 0>(ray, hit, stats);
-    case 1:
-      return traverse_octant<kAnyHit, kCount, 1>(ray, hit, stats);
-    case 2:
-      return traverse_octant<kAnyHit, kCount, 2>(ray, hit, stats);
-    case 3:
-      return traverse_octant<kAnyHit, kCount, 3>(ray, hit, stats);
-    case 4:
-      return traverse_octant<kAnyHit, kCount, 4>(ray, hit, stats);
-    case 5:
-      return traverse_octant<kAnyHit, kCount, 5>(ray, hit, stats);
-    case 6:
-      return traverse_octant<kAnyHit, kCount, 6>(ray, hit, stats);
-    default:
-      return traverse_octant<kAnyHit, kCount, 7>(ray, hit, stats);
-  }
+  return dispatch_octant(direction_octant(ray.direction), [&](auto octant) {
+    return traverse_octant<kAnyHit, kCount, decltype(octant)::value>(ray, hit, stats);
+  });
 }
 
 template <bool kAnyHit, bool kCount, int kOctant>
@@ -165,16 +148,7 @@ bool Bvh4::traverse_octant(Ray& ray, Hit& hit, TraversalStats* stats) const {
     }
   }
 done:
-  if constexpr (kCount) {
-    stats->nodes_visited += nodes_visited;
-    stats->prim_tests += prim_tests;
-    stats->hits += found ? 1 : 0;
-  }
-  if (found) {
-    ray.tmax = tmax;
-    hit = best;
-  }
-  return found;
+  return finish_traversal<kCount>(found, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
 }
 
 bool Bvh4::intersect(Ray& ray, Hit& hit) const { return traverse<false, false>(ray, hit, nullptr); }

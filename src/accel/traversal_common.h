@@ -1,7 +1,11 @@
 #pragma once
-// The leaf loop shared by the BVH traversals (internal to src/accel).
+// Pieces shared by the BVH traversals (internal to src/accel): the leaf loop, the dispatch on
+// the ray's direction octant, and handing the result back.
 
+#include <cmath>
 #include <cstdint>
+#include <type_traits>
+#include <vector>
 
 #include "raylab/core/stats.h"
 #include "raylab/geometry/geometry.h"
@@ -61,6 +65,53 @@ inline std::vector<Triangle> triangles_in_leaf_order(const Geometry& geometry,
     if (prim_ids[i] < triangle_count) out[i] = geometry.triangles[prim_ids[i]];
   }
   return out;
+}
+
+/// The ray's direction octant: bit a is set when direction component a is negative (-0
+/// included: its reciprocal is -inf). It decides which of a box's two planes is met first.
+inline int direction_octant(Vec3 d) {
+  return (std::signbit(d.x) ? 1 : 0) | (std::signbit(d.y) ? 2 : 0) | (std::signbit(d.z) ? 4 : 0);
+}
+
+/// Calls `f(std::integral_constant<int, octant>{})`, so a kernel can be instantiated once per
+/// octant with its near and far planes known at compile time.
+template <class F>
+inline decltype(auto) dispatch_octant(int octant, F&& f) {
+  switch (octant) {
+    case 0:
+      return f(std::integral_constant<int, 0>{});
+    case 1:
+      return f(std::integral_constant<int, 1>{});
+    case 2:
+      return f(std::integral_constant<int, 2>{});
+    case 3:
+      return f(std::integral_constant<int, 3>{});
+    case 4:
+      return f(std::integral_constant<int, 4>{});
+    case 5:
+      return f(std::integral_constant<int, 5>{});
+    case 6:
+      return f(std::integral_constant<int, 6>{});
+    default:
+      return f(std::integral_constant<int, 7>{});
+  }
+}
+
+/// Hands a traversal's result back: adds its counts to `stats` (when counting) and, on a hit,
+/// writes the hit and shrinks the ray. Returns `found`.
+template <bool kCount>
+inline bool finish_traversal(bool found, float tmax, const Hit& best, std::uint64_t nodes_visited,
+                             std::uint64_t prim_tests, Ray& ray, Hit& hit, TraversalStats* stats) {
+  if constexpr (kCount) {
+    stats->nodes_visited += nodes_visited;
+    stats->prim_tests += prim_tests;
+    stats->hits += found ? 1 : 0;
+  }
+  if (found) {
+    ray.tmax = tmax;
+    hit = best;
+  }
+  return found;
 }
 
 }  // namespace raylab
