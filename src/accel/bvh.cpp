@@ -60,10 +60,6 @@ inline bool hit_node(const BvhNode& node, const BvhBoxRay& r, float tmin, float 
   return t_near <= t_far;
 }
 
-struct StackEntry {
-  std::uint32_t node;
-  float t_enter;
-};
 constexpr int kStackSize = 128;  // the builder bounds depth well below this (see bvh_build.cpp)
 
 }  // namespace
@@ -107,15 +103,16 @@ bool Bvh::traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, Traversa
     // Only rays that enter the tree need the triangle test's constants (most rays of a typical
     // image miss everything, and for them the root test is the whole cost).
     const WatertightRay tri_ray(ray);
-    StackEntry stack[kStackSize];
-    int sp = 0;
+    TraversalStack<kStackSize> stack;
     std::uint32_t current = 0;
     for (;;) {
       const BvhNode& node = nodes[current];
       if (node.is_leaf()) {
         if (intersect_leaf<kAnyHit, kCount>(leaf, node.first, node.count, tri_ray, ray, tmin, tmax, best, prim_tests)) {
           found = true;
-          if constexpr (kAnyHit) goto done;
+          if constexpr (kAnyHit) {
+            return finish_traversal<kCount>(true, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
+          }
         }
       } else {
         const std::uint32_t left = node.first;
@@ -130,7 +127,11 @@ bool Bvh::traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, Traversa
           // Visit the nearer child first; the farther one waits with its entry distance, so it
           // can be skipped if a closer hit is found meanwhile.
           const bool right_first = t_right < t_left;
-          stack[sp++] = right_first ? StackEntry{left, t_left} : StackEntry{left + 1, t_right};
+          if (right_first) {
+            stack.push(left, t_left);
+          } else {
+            stack.push(left + 1, t_right);
+          }
           current = right_first ? left + 1 : left;
           continue;
         }
@@ -139,18 +140,10 @@ bool Bvh::traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, Traversa
           continue;
         }
       }
-      // Pop the next subtree that can still hold a closer hit.
-      for (;;) {
-        if (sp == 0) goto done;
-        const StackEntry e = stack[--sp];
-        if (kAnyHit || e.t_enter <= tmax) {
-          current = e.node;
-          break;
-        }
-      }
+      // Continue with the next subtree that can still hold a closer hit.
+      if (!stack.template pop<kAnyHit>(tmax, current)) break;
     }
   }
-done:
   return finish_traversal<kCount>(found, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
 }
 

@@ -20,11 +20,6 @@ constexpr float kSlabWiden = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x
 // median fallback bounds it), so 512 entries cannot overflow.
 constexpr int kStackSize = 512;
 
-struct StackEntry {
-  std::uint32_t node;
-  float t_enter;
-};
-
 int depth_of(const std::vector<Bvh4Node>& nodes, std::uint32_t index) {
   int deepest = 0;
   const Bvh4Node& n = nodes[index];
@@ -82,8 +77,7 @@ bool Bvh4::traverse_octant(Ray& ray, Hit& hit, TraversalStats* stats) const {
   Hit best = hit;
   bool found = false;
   std::uint64_t nodes_visited = 0, prim_tests = 0;
-  StackEntry stack[kStackSize];
-  int sp = 0;
+  TraversalStack<kStackSize> stack;
   std::uint32_t current = 0;
   for (;;) {
     const Bvh4Node& node = nodes[current];
@@ -112,7 +106,9 @@ bool Bvh4::traverse_octant(Ray& ray, Hit& hit, TraversalStats* stats) const {
         if (intersect_leaf<kAnyHit, kCount>(leaf, node.child[i], node.count[i], tri_ray, ray, tmin, tmax, best,
                                             prim_tests)) {
           found = true;
-          if constexpr (kAnyHit) goto done;
+          if constexpr (kAnyHit) {
+            return finish_traversal<kCount>(true, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
+          }
         }
       } else {
         next[n] = node.child[i];
@@ -130,24 +126,16 @@ bool Bvh4::traverse_octant(Ray& ray, Hit& hit, TraversalStats* stats) const {
         }
       }
       for (int a = 0; a + 1 < n; ++a) {
-        if (kAnyHit || next_t[a] <= tmax) stack[sp++] = {next[a], next_t[a]};
+        if (kAnyHit || next_t[a] <= tmax) stack.push(next[a], next_t[a]);
       }
       if (kAnyHit || next_t[n - 1] <= tmax) {
         current = next[n - 1];
         continue;
       }
     }
-    // Pop the next subtree that can still hold a closer hit.
-    for (;;) {
-      if (sp == 0) goto done;
-      const StackEntry e = stack[--sp];
-      if (kAnyHit || e.t_enter <= tmax) {
-        current = e.node;
-        break;
-      }
-    }
+    // Continue with the next subtree that can still hold a closer hit.
+    if (!stack.template pop<kAnyHit>(tmax, current)) break;
   }
-done:
   return finish_traversal<kCount>(found, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
 }
 

@@ -97,6 +97,36 @@ inline decltype(auto) dispatch_octant(int octant, F&& f) {
   }
 }
 
+/// Subtrees waiting to be visited, each with the distance at which the ray enters it.
+template <int kCapacity>
+class TraversalStack {
+ public:
+  /// Saves subtree `node`, entered at distance `t_enter`. The caller bounds the depth.
+  void push(std::uint32_t node, float t_enter) { m_entries[m_size++] = {node, t_enter}; }
+
+  /// Pops the most recently pushed subtree that can still hold a hit closer than `tmax`
+  /// (any subtree for any-hit queries, which need no order); false when none is left.
+  template <bool kAnyHit>
+  bool pop(float tmax, std::uint32_t& node) {
+    while (m_size > 0) {
+      const Entry& e = m_entries[--m_size];
+      if (kAnyHit || e.t_enter <= tmax) {
+        node = e.node;
+        return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  struct Entry {
+    std::uint32_t node;
+    float t_enter;
+  };
+  Entry m_entries[kCapacity];
+  int m_size = 0;
+};
+
 /// Hands a traversal's result back: adds its counts to `stats` (when counting) and, on a hit,
 /// writes the hit and shrinks the ray. Returns `found`.
 template <bool kCount>
