@@ -29,10 +29,6 @@ struct BvhBoxRay {
 
 namespace {
 
-// Slab factor of Ize (2013) as used by pbrt: widening the exit distance by 1 + 2 * gamma(3)
-// makes the float slab test conservative, so a primitive lying on a box face is never culled.
-constexpr float kSlabWiden = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
-
 // Entry distance into `node` if the ray's [tmin, tmax] overlaps it, for rays in octant kOctant
 // (near and far planes chosen at compile time). NaN slabs (origin on the plane of a face,
 // direction parallel to it) are ignored by the comparison order, so boxes are closed sets. The

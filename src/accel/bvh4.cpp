@@ -12,10 +12,6 @@
 namespace raylab {
 namespace {
 
-// See bvh.cpp: widening the exit distance by 1 + 2 gamma(3) makes the float slab test
-// conservative, so a primitive lying in a box face is never culled by rounding.
-constexpr float kSlabWiden = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
-
 // Each step pushes at most three entries and the tree is at most ~96 levels deep (the builder's
 // median fallback bounds it), so 512 entries cannot overflow.
 constexpr int kStackSize = 512;
@@ -24,7 +20,7 @@ int depth_of(const std::vector<Bvh4Node>& nodes, std::uint32_t index) {
   int deepest = 0;
   const Bvh4Node& n = nodes[index];
   for (int i = 0; i < 4; ++i) {
-    if (n.count[i] == 0 && n.lo[0][i] <= n.hi[0][i] && n.child[i] != index) {
+    if (n.count[i] == 0 && n.lo[0][i] <= n.hi[0][i]) {  // an interior slot (empty slots have empty boxes)
       deepest = std::max(deepest, 1 + depth_of(nodes, n.child[i]));
     }
   }

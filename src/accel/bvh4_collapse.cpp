@@ -19,13 +19,13 @@ class Collapser {
 
   std::vector<Bvh4Node> run() {
     m_out.reserve(m_tree.nodes.size() / 2 + 1);
-    const BvhNode& root = m_tree.nodes[0];
-    if (root.is_leaf() || m_tree.nodes.size() == 1) {
-      // A single leaf (or an empty tree): one wide node with the leaf in slot 0.
-      m_out.push_back(empty_node());
-      place(m_out[0], 0, 0);
+    m_out.push_back(empty_node());
+    if (m_tree.prim_ids.empty()) return std::move(m_out);  // nothing to hold: four empty slots
+    if (m_tree.nodes[0].is_leaf()) {
+      place(m_out[0], 0, 0);  // a single leaf: slot 0 of the only node
       return std::move(m_out);
     }
+    m_out.clear();
     convert(0);
     return std::move(m_out);
   }

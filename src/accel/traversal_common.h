@@ -67,6 +67,11 @@ inline std::vector<Triangle> triangles_in_leaf_order(const Geometry& geometry,
   return out;
 }
 
+/// Factor by which slab tests widen a box's exit distance: 1 + 2 gamma(3) (Ize 2013, as in
+/// pbrt). It makes the float slab test conservative, so a primitive lying in a box face is never
+/// culled by rounding.
+inline constexpr float kSlabWiden = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
+
 /// The ray's direction octant: bit a is set when direction component a is negative (-0
 /// included: its reciprocal is -inf). It decides which of a box's two planes is met first.
 inline int direction_octant(Vec3 d) {

@@ -3,21 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 
 #include "raylab/core/error.h"
+#include "raylab/io/file_extension.h"
 #include "raylab/io/obj_loader.h"
 #include "raylab/scene/builtin_scenes.h"
 
 namespace raylab {
-namespace {
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
-}  // namespace
 
 void fit_camera_and_lights(Scene& scene) {
   const Box3 box = scene.geometry.bounds();
@@ -31,7 +24,7 @@ void fit_camera_and_lights(Scene& scene) {
   cam.vfov_degrees = 40.f;
   // Distance at which the bounding sphere just fills the vertical field of view: the sphere
   // around the box is loose already, so no further margin is needed.
-  const float distance = 1.0f * radius / std::sin(0.5f * cam.vfov_degrees * 3.14159265f / 180.f);
+  const float distance = 1.0f * radius / std::sin(cam.vfov_degrees * std::numbers::pi_v<float> / 360.f);
   const Vec3 view_dir = normalize(Vec3{0.35f, 0.3f, 1.f});
   cam.at = center;
   cam.from = center + view_dir * distance;
@@ -51,7 +44,7 @@ void fit_camera_and_lights(Scene& scene) {
 
 Scene load_scene(const std::string& source) {
   if (is_builtin_scene(source)) return make_builtin_scene(source);
-  const std::string ext = lower_extension(source);
+  const std::string ext = lowercase_extension(source);
   if (ext == ".obj") {
     Scene scene;
     Material grey;
