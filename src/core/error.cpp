@@ -1,5 +1,7 @@
 #include "raylab/core/error.h"
 
+#include <sstream>
+
 namespace raylab {
 namespace {
 
@@ -21,5 +23,12 @@ InputError::InputError(std::string file, int line, int col, const std::string& m
       m_file(std::move(file)),
       m_line(line),
       m_col(col) {}
+
+InputError InputError::at_byte(std::string file, std::uint64_t offset, const std::string& message) {
+  // A stream rather than string concatenation, which trips GCC 12's -Wrestrict false positive.
+  std::ostringstream text;
+  text << "byte " << offset << ": " << message;
+  return InputError(std::move(file), 0, 0, text.str());
+}
 
 }  // namespace raylab

@@ -3,19 +3,32 @@
 #include <cassert>
 
 namespace raylab {
+namespace {
 
-std::uint32_t Geometry::add(const Triangle& t, std::uint32_t object) {
-  triangles.push_back(t);
-  triangle_objects.push_back(object);
-  if (!triangle_normals.empty()) triangle_normals.push_back({Vec3{}, Vec3{}, Vec3{}});
-  return static_cast<std::uint32_t>(triangles.size() - 1);
-}
+// Texture coordinates of a triangle that has none of its own.
+constexpr std::array<Vec2, 3> kBarycentricUvs{Vec2{0.f, 0.f}, Vec2{1.f, 0.f}, Vec2{0.f, 1.f}};
+
+}  // namespace
+
+std::uint32_t Geometry::add(const Triangle& t, std::uint32_t object) { return add(t, nullptr, nullptr, object); }
 
 std::uint32_t Geometry::add(const Triangle& t, const std::array<Vec3, 3>& normals, std::uint32_t object) {
-  if (triangle_normals.size() < triangles.size()) triangle_normals.resize(triangles.size(), {Vec3{}, Vec3{}, Vec3{}});
+  return add(t, &normals, nullptr, object);
+}
+
+std::uint32_t Geometry::add(const Triangle& t, const std::array<Vec3, 3>* normals, const std::array<Vec2, 3>* uvs,
+                            std::uint32_t object) {
+  // Optional arrays are created on first use, back-filled with "absent" for earlier triangles.
+  if (normals != nullptr && triangle_normals.size() < triangles.size()) {
+    triangle_normals.resize(triangles.size(), {Vec3{}, Vec3{}, Vec3{}});
+  }
+  if (uvs != nullptr && triangle_uvs.size() < triangles.size()) {
+    triangle_uvs.resize(triangles.size(), kBarycentricUvs);
+  }
   triangles.push_back(t);
   triangle_objects.push_back(object);
-  triangle_normals.push_back(normals);
+  if (!triangle_normals.empty()) triangle_normals.push_back(normals ? *normals : std::array<Vec3, 3>{});
+  if (!triangle_uvs.empty()) triangle_uvs.push_back(uvs ? *uvs : kBarycentricUvs);
   return static_cast<std::uint32_t>(triangles.size() - 1);
 }
 

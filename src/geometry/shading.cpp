@@ -34,6 +34,11 @@ SurfaceInteraction surface_at(const Geometry& geometry, const Ray& ray, const Hi
       }
       si.u = hit.u;
       si.v = hit.v;
+      if (!geometry.triangle_uvs.empty()) {
+        const auto& uv = geometry.triangle_uvs[ref.index];
+        si.u = uv[0].x * w + uv[1].x * hit.u + uv[2].x * hit.v;
+        si.v = uv[0].y * w + uv[1].y * hit.u + uv[2].y * hit.v;
+      }
       break;
     }
     case ShapeKind::kSphere: {

@@ -10,7 +10,6 @@
 #include <sstream>
 
 #include "raylab/core/error.h"
-#include "raylab/geometry/polygon.h"
 
 namespace raylab {
 namespace {
@@ -163,7 +162,7 @@ MeshLoadReport load_obj(const std::string& path, Scene& scene, std::uint32_t obj
 
   std::size_t face_ordinal = 0;  // faces in file order, across shapes
   std::vector<int> corners, corner_normals;
-  std::vector<Vec3> positions;  // the face's corners, for triangulate_polygon
+  std::vector<Vec3> positions, face_normals;  // the face's corners and their normals
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     std::size_t offset = 0;
     for (const unsigned char fv_raw : shape.mesh.num_face_vertices) {
@@ -195,27 +194,13 @@ MeshLoadReport load_obj(const std::string& path, Scene& scene, std::uint32_t obj
       }
       offset += fv;
       ++face_ordinal;
-      // Ear clipping rather than a fan: a fan is wrong for the non-convex faces exporters write.
-      // Corners the triangulation leaves out (repeated, or a zero-area face) count as dropped
-      // triangles, as the fv - 2 fan triangles over them did.
       positions.clear();
-      for (const int c : corners) positions.push_back(vertex(c));
-      const std::vector<std::array<std::uint32_t, 3>> triangles = triangulate_polygon(positions);
-      if (fv >= 3) report.degenerate_dropped += fv - 2 - triangles.size();
-      for (const auto& t : triangles) {
-        const Triangle tri{positions[t[0]], positions[t[1]], positions[t[2]]};
-        if (dot(triangle_normal(tri), triangle_normal(tri)) == 0.f) {
-          ++report.degenerate_dropped;
-          continue;
-        }
-        if (all_normals) {
-          auto normal = [&](std::uint32_t k) { return normals[corner_normals[k]]; };
-          scene.geometry.add(tri, {normal(t[0]), normal(t[1]), normal(t[2])}, object);
-        } else {
-          scene.geometry.add(tri, object);
-        }
-        ++report.triangles;
+      face_normals.clear();
+      for (std::size_t k = 0; k < corners.size(); ++k) {
+        positions.push_back(vertex(corners[k]));
+        if (all_normals) face_normals.push_back(normals[corner_normals[k]]);
       }
+      add_polygon(scene.geometry, positions, face_normals, {}, object, report);
     }
   }
   return report;

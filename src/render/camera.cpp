@@ -5,11 +5,17 @@
 
 namespace raylab {
 
-Camera::Camera(const CameraSpec& spec, int width, int height) : m_origin(spec.from) {
+Camera::Camera(const CameraSpec& spec, int width, int height) : m_origin(spec.from), m_hither(spec.hither) {
   const Vec3 forward = normalize(spec.at - spec.from);
+  m_forward = forward;
   const Vec3 right = normalize(cross(forward, spec.up));
   const Vec3 up = cross(right, forward);
-  const float half_height = std::tan(spec.vfov_degrees * std::numbers::pi_v<float> / 360.f);
+  float half_height = std::tan(spec.vfov_degrees * std::numbers::pi_v<float> / 360.f);
+  // NFF's angle reaches from the centre of the top pixel row to the centre of the bottom one,
+  // (height - 1) pixels; the image plane spans `height` pixels. Pixels are square.
+  if (spec.fov_span == CameraSpec::FovSpan::kPixelCentres && height > 1) {
+    half_height *= static_cast<float>(height) / static_cast<float>(height - 1);
+  }
   const float half_width = half_height * static_cast<float>(width) / static_cast<float>(height);
   m_dx = right * (2.f * half_width / static_cast<float>(width));
   m_dy = up * (-2.f * half_height / static_cast<float>(height));
@@ -20,7 +26,8 @@ Ray Camera::generate(float x, float y) const {
   Ray r;
   r.origin = m_origin;
   r.direction = normalize(m_top_left + m_dx * x + m_dy * y);
-  r.tmin = 0.f;
+  // Start on the hither plane: distance along the ray to a plane `m_hither` ahead of the eye.
+  r.tmin = m_hither > 0.f ? m_hither / dot(r.direction, m_forward) : 0.f;
   return r;
 }
 

@@ -2,6 +2,7 @@
 /// \file
 /// The two kinds of error a user can cause, and how they are reported.
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -15,6 +16,9 @@ class InputError : public std::runtime_error {
   InputError(std::string file, int line, int col, const std::string& message);
   /// An error about a file as a whole (no position).
   InputError(std::string file, const std::string& message) : InputError(std::move(file), 0, 0, message) {}
+
+  /// An error at byte `offset` of a binary file: `file: byte N: message`.
+  static InputError at_byte(std::string file, std::uint64_t offset, const std::string& message);
 
   /// The file the error is about (may be empty).
   const std::string& file() const { return m_file; }

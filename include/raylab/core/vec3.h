@@ -7,6 +7,11 @@
 
 namespace raylab {
 
+/// A 2-vector of float: texture coordinates.
+struct Vec2 {
+  float x = 0.f, y = 0.f;
+};
+
 /// A 3-vector of float (12 bytes). Plain data: no invariants, public members.
 struct Vec3 {
   float x = 0.f, y = 0.f, z = 0.f;

@@ -43,10 +43,18 @@ struct Geometry {
   /// normal means "use the geometric normal" for that triangle.
   std::vector<std::array<Vec3, 3>> triangle_normals;
 
+  /// Per-vertex texture coordinates of each triangle; empty, or parallel to `triangles`.
+  /// Triangles without them get (0,0), (1,0), (0,1), i.e. their barycentric coordinates.
+  std::vector<std::array<Vec2, 3>> triangle_uvs;
+
   /// Appends a triangle of object `object`; returns its global id.
   std::uint32_t add(const Triangle& t, std::uint32_t object);
   /// Appends a triangle with per-vertex shading normals.
   std::uint32_t add(const Triangle& t, const std::array<Vec3, 3>& normals, std::uint32_t object);
+  /// Appends a triangle with optional per-vertex shading normals and texture coordinates (each
+  /// nullptr when absent). The one entry point that keeps all parallel arrays in step.
+  std::uint32_t add(const Triangle& t, const std::array<Vec3, 3>* normals, const std::array<Vec2, 3>* uvs,
+                    std::uint32_t object);
   /// Appends a sphere.
   void add(const Sphere& s, std::uint32_t object);
   /// Appends a cylinder or cone.

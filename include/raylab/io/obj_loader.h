@@ -5,16 +5,10 @@
 #include <cstdint>
 #include <string>
 
+#include "raylab/scene/mesh_builder.h"
 #include "raylab/scene/scene.h"
 
 namespace raylab {
-
-/// Counts of what a mesh load did.
-struct MeshLoadReport {
-  std::size_t vertices = 0;
-  std::size_t triangles = 0;           ///< triangles added
-  std::size_t degenerate_dropped = 0;  ///< zero-area faces counted and dropped
-};
 
 /// Appends the triangles of OBJ file `path` to `scene.geometry` as object `object`. Polygons are
 /// triangulated by raylab (tinyobjloader's own triangulation reads vertices before any index is

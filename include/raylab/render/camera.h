@@ -22,6 +22,8 @@ class Camera {
   Vec3 m_top_left;  ///< image plane point of image position (0, 0)
   Vec3 m_dx;        ///< image plane step of one pixel to the right
   Vec3 m_dy;        ///< image plane step of one pixel down
+  Vec3 m_forward;   ///< unit viewing direction (for the hither plane)
+  float m_hither;   ///< distance of the near plane along m_forward
 };
 
 }  // namespace raylab

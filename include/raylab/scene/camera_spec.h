@@ -13,6 +13,12 @@ struct CameraSpec {
   Vec3 at{0.f, 0.f, 0.f};
   Vec3 up{0.f, 1.f, 0.f};
   float vfov_degrees = 45.f;
+  /// What `vfov_degrees` spans vertically: the whole image from top edge to bottom edge, or, as
+  /// NFF defines its `angle`, from the centre of the top pixel row to the centre of the bottom row.
+  enum class FovSpan { kImageEdges, kPixelCentres } fov_span = FovSpan::kImageEdges;
+  /// Distance of the near (hither) plane from the eye, along the viewing direction: eye rays
+  /// start there (NFF `hither`).
+  float hither = 0.f;
 };
 
 }  // namespace raylab
