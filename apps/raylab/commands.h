@@ -17,4 +17,10 @@ CommandRunner add_render_command(CLI::App& app);
 /// `raylab diff A B [--max-rmse X]`: compares two images.
 CommandRunner add_diff_command(CLI::App& app);
 
+/// `raylab info SCENE`: counts, bounds, materials, lights, camera, load time and memory.
+CommandRunner add_info_command(CLI::App& app);
+
+/// `raylab convert IN OUT`: writes a scene as NFF, OBJ or binary PLY.
+CommandRunner add_convert_command(CLI::App& app);
+
 }  // namespace raylab::cli

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "raylab 0.1.0");
   const raylab::cli::CommandRunner run_render = raylab::cli::add_render_command(app);
   const raylab::cli::CommandRunner run_diff = raylab::cli::add_diff_command(app);
+  const raylab::cli::CommandRunner run_info = raylab::cli::add_info_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("render")) return run_render();
     if (app.got_subcommand("diff")) return run_diff();
+    if (app.got_subcommand("info")) return run_info();
   } catch (const raylab::UsageError& e) {
     std::fprintf(stderr, "raylab: %s\n", e.what());
     return 2;

@@ -16,6 +16,9 @@
 #include "raylab/io/scene_loader.h"
 #include "raylab/render/progress.h"
 #include "raylab/render/renderer.h"
+#include "raylab/render/spd_protocol.h"
+#include "raylab/scene/builtin_scenes.h"
+#include "raylab/scene/spd.h"
 
 namespace raylab::cli {
 namespace {
@@ -29,6 +32,9 @@ struct RenderArgs {
   int threads = 0;
   bool stats = false;
   bool quiet = false;
+  bool allow_outside_paths = false;
+  bool list_scenes = false;
+  bool spd_protocol = false;
 };
 
 std::string human_bytes(std::size_t bytes) {
@@ -57,10 +63,40 @@ void print_stats(const RenderStats& s, const AccelInfo& info, double seconds) {
   fmt::print("throughput                {:.2f} Mrays/s\n", seconds > 0 ? total / seconds * 1e-6 : 0.0);
 }
 
+void list_scenes() {
+  fmt::print("built-in scenes:\n");
+  for (auto name : builtin_scene_names()) fmt::print("  {}\n", name);
+  fmt::print("SPD generators (spd:NAME or spd:NAME?size=N):\n");
+  for (const SpdGenerator& g : spd_generators()) {
+    fmt::print("  spd:{:<8} size 1..{}, default {}: {}\n", g.name, g.max_size, g.default_size, g.description);
+  }
+  std::string extensions;
+  for (auto e : scene_file_extensions()) extensions += (extensions.empty() ? "" : " ") + std::string(e);
+  fmt::print("scene and mesh files: {}\n", extensions);
+}
+
+void print_protocol_counts(const SpdProtocolCounts& c) {
+  fmt::print("SPD protocol: 512x512, eye rays through the 513x513 pixel corners, depth 5\n");
+  fmt::print("{:<20}{:>14}{:>14}\n", "rays", "cast", "hit");
+  fmt::print("{:<20}{:>14}{:>14}\n", "primary", c.primary, c.primary_hits);
+  fmt::print("{:<20}{:>14}{:>14}\n", "shadow", c.shadow, c.shadow_hits);
+  fmt::print("{:<20}{:>14}{:>14}\n", "secondary", c.secondary, c.secondary_hits);
+}
+
 int run(const RenderArgs& args) {
+  if (args.list_scenes) {
+    list_scenes();
+    return 0;
+  }
+  if (args.spd_protocol && (args.width || args.height || args.spp || args.max_depth)) {
+    throw UsageError("--spd-protocol fixes the image size, samples and depth (512x512, corner rays, depth 5)");
+  }
   check_image_extension(args.output);  // usage error before any work
   check_writable(args.output);         // input error before any work
-  Scene scene = load_scene(args.scene);
+  LoadOptions load;
+  load.allow_outside_paths = args.allow_outside_paths;
+  Scene scene = load_scene(args.scene, load);
+  for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
   RenderSettings& s = scene.settings;
   if (args.width) s.width = *args.width;
   if (args.height) s.height = *args.height;
@@ -69,6 +105,18 @@ int run(const RenderArgs& args) {
   if (args.seed) s.seed = *args.seed;
 
   const std::unique_ptr<Accelerator> accel = make_accelerator(args.accel, scene.geometry);
+  if (args.spd_protocol) {
+    Film film(kSpdProtocolSize, kSpdProtocolSize);
+    RenderOptions options;
+    options.threads = args.threads;
+    options.count_traversal = args.stats;
+    const SpdProtocolResult result = render_spd_protocol(scene, *accel, film, options);
+    write_image(film, args.output);
+    print_protocol_counts(result.counts);
+    if (args.stats) print_stats(result.stats, accel->info(), result.seconds);
+    if (!args.quiet) fmt::print("wrote {} in {}\n", args.output, ProgressBar::format_duration(result.seconds));
+    return 0;
+  }
   Film film(s.width, s.height);
   const bool interactive = ::isatty(STDERR_FILENO) != 0;
   std::optional<ProgressBar> bar;
@@ -96,7 +144,10 @@ int run(const RenderArgs& args) {
 CommandRunner add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image (.png, .exr or .pfm)");
-  cmd->add_option("scene", args->scene, "Built-in scene name (demo) or mesh file (.obj)")->capture_default_str();
+  cmd->add_option("scene", args->scene,
+                  "Scene: a built-in name (demo, cornell), an SPD generator (spd:balls, spd:balls?size=6), or a "
+                  "file (.json .nff .obj .gltf .glb .ply .off .stl); see --list-scenes")
+      ->capture_default_str();
   cmd->add_option("-o,--output", args->output, "Output image; format from the extension: .png .exr .pfm")
       ->capture_default_str();
   cmd->add_option("--width", args->width, "Image width in pixels")->check(CLI::Range(1, 32768));
@@ -115,6 +166,12 @@ CommandRunner add_render_command(CLI::App& app) {
       ->check(CLI::Range(1, 64));
   cmd->add_flag("--stats", args->stats, "Print ray counts, traversal work and timings after the render");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress bar and no summary");
+  cmd->add_flag("--allow-outside-paths", args->allow_outside_paths,
+                "Let a scene file reference files outside its own folder");
+  cmd->add_flag("--list-scenes", args->list_scenes, "List the built-in scenes and SPD generators, then exit");
+  cmd->add_flag("--spd-protocol", args->spd_protocol,
+                "Render by the SPD testing procedure (512x512, rays through pixel corners, depth 5) and print "
+                "the ray-count invariants");
   return [args] { return run(*args); };
 }
 

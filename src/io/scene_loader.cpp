@@ -8,6 +8,8 @@
 #include "raylab/core/error.h"
 #include "raylab/io/file_extension.h"
 #include "raylab/io/obj_loader.h"
+#include "raylab/io/scene_json.h"
+#include "raylab/scene/spd.h"
 #include "raylab/scene/builtin_scenes.h"
 
 namespace raylab {
@@ -42,30 +44,76 @@ void fit_camera_and_lights(Scene& scene) {
   scene.settings.background = {0.08f, 0.09f, 0.11f};
 }
 
-Scene load_scene(const std::string& source) {
-  if (is_builtin_scene(source)) return make_builtin_scene(source);
-  const std::string ext = lowercase_extension(source);
+std::span<const std::string_view> scene_file_extensions() {
+  static constexpr std::string_view kExtensions[] = {".json", ".nff", ".obj", ".gltf", ".glb", ".ply", ".off", ".stl"};
+  return kExtensions;
+}
+
+namespace {
+
+Material default_mesh_material() {
+  Material grey;
+  grey.name = "grey";
+  grey.color = {0.75f, 0.75f, 0.75f};
+  grey.kd = 0.9f;
+  grey.ks = 0.2f;
+  grey.shininess = 40.f;
+  return grey;
+}
+
+void note_dropped(Scene& scene, const std::string& path, const MeshLoadReport& report) {
+  if (report.degenerate_dropped > 0) {
+    scene.warnings.push_back(path + ": " + std::to_string(report.degenerate_dropped) +
+                             " zero-area triangles dropped");
+  }
+}
+
+std::string extension_list() {
+  std::string list;
+  for (auto e : scene_file_extensions()) list += (list.empty() ? "" : " ") + std::string(e);
+  return list;
+}
+
+}  // namespace
+
+Scene load_mesh(const std::string& path, const LoadOptions& options) {
+  const std::string ext = lowercase_extension(path);
+  Scene scene;
+  const std::string name = std::filesystem::path(path).filename().string();
   if (ext == ".obj") {
-    Scene scene;
-    Material grey;
-    grey.name = "grey";
-    grey.color = {0.75f, 0.75f, 0.75f};
-    grey.kd = 0.9f;
-    grey.ks = 0.2f;
-    grey.shininess = 40.f;
-    const std::uint32_t mat = scene.add_material(grey);
-    const std::uint32_t obj = scene.add_object(std::filesystem::path(source).filename().string(), mat);
-    load_obj(source, scene, obj);
+    const std::uint32_t object = scene.add_object(name, scene.add_material(default_mesh_material()));
+    note_dropped(scene, path, load_obj(path, scene, object));
+    return scene;
+  }
+  const std::uint32_t object = scene.add_object(name, scene.add_material(default_mesh_material()));
+  (void)object;
+  (void)options;
+  throw UsageError("cannot load '" + path + "' as a mesh: unsupported format '" + ext + "' (meshes: .obj)");
+}
+
+Scene load_scene(const std::string& source, const LoadOptions& options) {
+  if (is_builtin_scene(source)) return make_builtin_scene(source);
+  if (is_spd_source(source)) return make_spd_scene(source);
+  const std::string ext = lowercase_extension(source);
+  if (ext == ".json") return load_scene_json(source, options);
+  const bool mesh = ext == ".obj" || ext == ".gltf" || ext == ".glb" || ext == ".ply" || ext == ".off" || ext == ".stl";
+  if (mesh) {
+    Scene scene = load_mesh(source, options);
     if (scene.geometry.size() == 0) throw InputError(source, "the mesh has no faces");
+    const bool has_camera = scene.camera_from_file;
+    const CameraSpec camera = scene.camera;
     fit_camera_and_lights(scene);
+    if (has_camera) scene.camera = camera;
     return scene;
   }
   if (ext.empty() && !std::filesystem::exists(source)) {
     std::string names;
     for (auto n : builtin_scene_names()) names += (names.empty() ? "" : ", ") + std::string(n);
-    throw UsageError("unknown scene '" + source + "' (built-in scenes: " + names + "; or a .obj file)");
+    throw UsageError("unknown scene '" + source + "' (built-in scenes: " + names +
+                     "; SPD generators: spd:NAME, see --list-scenes; or a file: " + extension_list() + ")");
   }
-  throw UsageError("cannot load '" + source + "': unsupported scene format '" + ext + "' (supported: .obj)");
+  throw UsageError("cannot load '" + source + "': unsupported scene format '" + ext + "' (supported: " +
+                   extension_list() + ")");
 }
 
 }  // namespace raylab

@@ -8,7 +8,7 @@
 namespace raylab {
 namespace {
 
-constexpr std::array<std::string_view, 1> kNames = {"demo"};
+constexpr std::array<std::string_view, 2> kNames = {"demo", "cornell"};
 
 }  // namespace
 
@@ -23,6 +23,7 @@ bool is_builtin_scene(std::string_view name) {
 
 Scene make_builtin_scene(std::string_view name) {
   if (name == "demo") return make_demo_scene();
+  if (name == "cornell") return make_cornell_scene();
   std::string valid;
   for (auto n : kNames) valid += (valid.empty() ? "" : ", ") + std::string(n);
   throw UsageError("unknown built-in scene '" + std::string(name) + "' (valid: " + valid + ")");

@@ -22,4 +22,8 @@ Scene make_builtin_scene(std::string_view name);
 /// sphere, a Phong-shaded sphere, a smooth torus mesh, two point lights and a quad area light.
 Scene make_demo_scene();
 
+/// The Cornell box with its published dimensions (millimetres), camera and colours; the light is
+/// a quad area light with an emissive quad in its place.
+Scene make_cornell_scene();
+
 }  // namespace raylab

@@ -3,6 +3,7 @@
 /// Settings a scene carries and the command line may override.
 
 #include <cstdint>
+#include <string>
 
 #include "raylab/core/vec3.h"
 
@@ -13,6 +14,7 @@ struct RenderSettings {
   int width = 640;                  ///< image width in pixels
   int height = 480;                 ///< image height in pixels
   int spp = 1;                      ///< samples per pixel (jittered on a sqrt(spp) grid where square)
+  std::string sampler = "jittered";  ///< pixel sample placement (see --sampler)
   int max_depth = 5;                ///< ray tree depth: 1 = eye rays only (SPD testing procedure: 5)
   std::uint64_t seed = 0;           ///< seed of every random choice
   Color background{0.f, 0.f, 0.f};  ///< radiance of rays that leave the scene

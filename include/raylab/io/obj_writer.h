@@ -1,0 +1,17 @@
+#pragma once
+/// \file
+/// Wavefront OBJ output of a scene's triangles (for `raylab convert`).
+
+#include <string>
+
+#include "raylab/scene/scene.h"
+
+namespace raylab {
+
+/// OBJ text of the triangles of `scene.geometry` (analytic shapes must have been tessellated;
+/// throws UsageError otherwise): one `o` group per object, `v`/`vn`/`vt` per triangle corner and
+/// numbers that read back to the same floats. Materials are named with `usemtl` (no .mtl file
+/// is written).
+std::string encode_obj(const Scene& scene);
+
+}  // namespace raylab

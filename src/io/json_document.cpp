@@ -1,0 +1,199 @@
+#include "raylab/io/json_document.h"
+
+#include <algorithm>
+#include <iterator>
+#include <vector>
+
+#include "raylab/core/error.h"
+
+namespace raylab {
+namespace {
+
+using nlohmann::json;
+
+// Forward iterator over the text that tells the parser's reads to a shared counter, so the SAX
+// handler knows how far the lexer has read when an event arrives (nlohmann reports positions
+// only for syntax errors).
+struct CountingIterator {
+  using iterator_category = std::forward_iterator_tag;
+  using value_type = char;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const char*;
+  using reference = const char&;
+
+  const char* p = nullptr;
+  std::size_t* consumed = nullptr;
+  const char* base = nullptr;
+
+  reference operator*() const { return *p; }
+  CountingIterator& operator++() {
+    ++p;
+    *consumed = static_cast<std::size_t>(p - base);
+    return *this;
+  }
+  CountingIterator operator++(int) {
+    CountingIterator old = *this;
+    ++*this;
+    return old;
+  }
+  bool operator==(const CountingIterator& o) const { return p == o.p; }
+  bool operator!=(const CountingIterator& o) const { return p != o.p; }
+};
+
+// Maps byte offsets to line and column.
+class LineIndex {
+ public:
+  explicit LineIndex(std::string_view text) {
+    m_starts.push_back(0);
+    for (std::size_t i = 0; i < text.size(); ++i)
+      if (text[i] == '\n') m_starts.push_back(i + 1);
+  }
+  TextPosition at(std::size_t offset) const {
+    const auto it = std::upper_bound(m_starts.begin(), m_starts.end(), offset);
+    const std::size_t line = static_cast<std::size_t>(it - m_starts.begin());  // >= 1
+    return {static_cast<int>(line), static_cast<int>(offset - m_starts[line - 1]) + 1};
+  }
+
+ private:
+  std::vector<std::size_t> m_starts;
+};
+
+constexpr std::size_t kMaxDepth = 64;
+
+// Builds the DOM and records positions. Containers are recorded at their opening bracket, keys
+// at their opening quote.
+class PositionSax {
+ public:
+  PositionSax(std::string_view text, const std::size_t* consumed, const LineIndex& lines, JsonDocument& doc,
+              json& root)
+      : m_text(text), m_consumed(consumed), m_lines(lines), m_doc(doc), m_root(root) {}
+
+  bool null() { return add(json(nullptr)); }
+  bool boolean(bool v) { return add(json(v)); }
+  bool number_integer(json::number_integer_t v) { return add(json(v)); }
+  bool number_unsigned(json::number_unsigned_t v) { return add(json(v)); }
+  bool number_float(json::number_float_t v, const std::string&) { return add(json(v)); }
+  bool string(std::string& v) { return add(json(std::move(v))); }
+  bool binary(json::binary_t&) { return add(json(nullptr)); }
+
+  bool start_object(std::size_t) { return open(json::object()); }
+  bool start_array(std::size_t) { return open(json::array()); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+
+  bool key(std::string& k) {
+    // The lexer has just read the closing quote; walk back to the opening one.
+    std::size_t end = *m_consumed;  // one past the closing quote
+    std::size_t start = end >= 2 ? end - 2 : 0;
+    while (start > 0 && !(m_text[start] == '"' && m_text[start - 1] != '\\')) --start;
+    Frame& f = m_stack.back();
+    if (f.value->contains(k)) {
+      const TextPosition pos = m_lines.at(start);
+      throw InputError(m_doc.file(), pos.line, pos.col, "duplicate key '" + k + "'");
+    }
+    f.key = k;
+    m_doc.record(f.pointer + "/" + json_pointer_escape(k), m_lines.at(start));
+    return true;
+  }
+
+  bool parse_error(std::size_t position, const std::string& token, const nlohmann::detail::exception& e) {
+    // nlohmann's message starts "[json.exception.parse_error.101] parse error at line L, column C: ".
+    std::string message = e.what();
+    if (const auto colon = message.find(": "); colon != std::string::npos) message = message.substr(colon + 2);
+    if (message.starts_with("syntax error while parsing ")) message = message.substr(27);
+    (void)token;
+    // `position` counts the characters read, the offending one included.
+    const TextPosition pos = m_lines.at(std::min(position > 0 ? position - 1 : 0, m_text.size()));
+    throw InputError(m_doc.file(), pos.line, pos.col, "JSON " + message);
+  }
+
+ private:
+  struct Frame {
+    json* value;
+    std::string pointer;
+    std::string key;  // object frames: the key whose value comes next
+  };
+
+  // Where the next value goes: its slot in the parent, and its JSON pointer.
+  std::pair<json*, std::string> slot() {
+    if (m_stack.empty()) return {&m_root, ""};
+    Frame& f = m_stack.back();
+    if (f.value->is_array()) {
+      const std::string pointer = f.pointer + "/" + std::to_string(f.value->size());
+      f.value->push_back(nullptr);
+      return {&f.value->back(), pointer};
+    }
+    json* v = &(*f.value)[f.key];
+    return {v, f.pointer + "/" + json_pointer_escape(f.key)};
+  }
+
+  bool add(json v) {
+    *slot().first = std::move(v);
+    return true;
+  }
+
+  bool open(json container) {
+    if (m_stack.size() >= kMaxDepth) {
+      const TextPosition pos = m_lines.at(*m_consumed - 1);
+      throw InputError(m_doc.file(), pos.line, pos.col, "JSON nested deeper than 64 levels");
+    }
+    auto [v, pointer] = slot();
+    *v = std::move(container);
+    // Object members are recorded at their key already; array elements and the root here.
+    m_doc.record(pointer, m_lines.at(*m_consumed - 1));
+    m_stack.push_back({v, pointer, {}});
+    return true;
+  }
+
+  bool close() {
+    m_stack.pop_back();
+    return true;
+  }
+
+  std::string_view m_text;
+  const std::size_t* m_consumed;
+  const LineIndex& m_lines;
+  JsonDocument& m_doc;
+  json& m_root;
+  std::vector<Frame> m_stack;
+};
+
+}  // namespace
+
+std::string json_pointer_escape(std::string_view key) {
+  std::string out;
+  for (const char c : key) {
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
+  }
+  return out;
+}
+
+JsonDocument::JsonDocument(std::string_view text, std::string file) : m_file(std::move(file)) {
+  const LineIndex lines(text);
+  std::size_t consumed = 0;
+  PositionSax sax(text, &consumed, lines, *this, m_root);
+  const CountingIterator first{text.data(), &consumed, text.data()};
+  const CountingIterator last{text.data() + text.size(), &consumed, text.data()};
+  json::sax_parse(first, last, &sax);
+}
+
+TextPosition JsonDocument::where(const std::string& pointer) const {
+  std::string p = pointer;
+  for (;;) {
+    if (const auto it = m_positions.find(p); it != m_positions.end()) return it->second;
+    if (p.empty()) return {};
+    p.erase(p.rfind('/'));
+  }
+}
+
+void JsonDocument::fail(const std::string& pointer, const std::string& message) const {
+  const TextPosition pos = where(pointer);
+  throw InputError(m_file, pos.line, pos.col, message);
+}
+
+}  // namespace raylab

@@ -1,0 +1,514 @@
+#include "raylab/io/scene_json.h"
+
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <map>
+#include <optional>
+
+#include "raylab/core/error.h"
+#include "raylab/io/json_document.h"
+#include "raylab/io/read_file.h"
+#include "raylab/io/scene_loader.h"
+#include "raylab/scene/mesh_builder.h"
+#include "raylab/scene/scene_merge.h"
+#include "raylab/scene/spd.h"
+
+namespace raylab {
+namespace {
+
+using nlohmann::json;
+
+std::string type_name(const json& v) {
+  if (v.is_number_integer() || v.is_number_unsigned()) return "an integer";
+  if (v.is_number()) return "a number";
+  if (v.is_string()) return "a string";
+  if (v.is_boolean()) return "a boolean";
+  if (v.is_array()) return "an array";
+  if (v.is_object()) return "an object";
+  return "null";
+}
+
+std::string join(std::initializer_list<std::string_view> names) {
+  std::string out;
+  for (auto n : names) out += (out.empty() ? "" : ", ") + std::string(n);
+  return out;
+}
+
+constexpr double kRequired = std::numeric_limits<double>::quiet_NaN();
+
+// Typed access to one JSON object of the scene, with messages that say where and what.
+class Node {
+ public:
+  Node(const JsonDocument& doc, const json& value, std::string pointer, std::string what)
+      : m_doc(doc), m_value(value), m_pointer(std::move(pointer)), m_what(std::move(what)) {}
+
+  const json& value() const { return m_value; }
+  const std::string& pointer() const { return m_pointer; }
+  [[noreturn]] void fail(const std::string& message) const { m_doc.fail(m_pointer, message); }
+  [[noreturn]] void fail_at(std::string_view key, const std::string& message) const {
+    m_doc.fail(child_pointer(key), message);
+  }
+
+  // Every key must be one of `valid`: a misspelt key must not be silently ignored.
+  void check_keys(std::initializer_list<std::string_view> valid) const {
+    if (!m_value.is_object()) fail(m_what + " must be an object, found " + type_name(m_value));
+    for (const auto& item : m_value.items()) {
+      bool known = false;
+      for (auto v : valid) known = known || item.key() == v;
+      if (!known) fail_at(item.key(), "unknown key '" + item.key() + "' in " + m_what + " (valid: " + join(valid) + ")");
+    }
+  }
+  bool has(std::string_view key) const { return m_value.contains(std::string(key)); }
+  Node child(std::string_view key, const std::string& what) const {
+    return Node(m_doc, m_value.at(std::string(key)), child_pointer(key), what);
+  }
+  Node element(std::size_t i, const std::string& what) const {
+    return Node(m_doc, m_value.at(i), m_pointer + "/" + std::to_string(i), what);
+  }
+
+  // `fallback` is the value when the key is absent; NaN (kRequired) makes the key required.
+  double number(std::string_view key, double fallback = kRequired, double lo = -HUGE_VAL, double hi = HUGE_VAL) const {
+    if (!has(key)) {
+      if (!std::isnan(fallback)) return fallback;
+      fail(m_what + " needs '" + std::string(key) + "'");
+    }
+    const json& v = m_value.at(std::string(key));
+    if (!v.is_number()) fail_at(key, "'" + std::string(key) + "' must be a number, found " + type_name(v));
+    const double d = v.get<double>();
+    if (!std::isfinite(d) || d < lo || d > hi) {
+      fail_at(key, "'" + std::string(key) + "' is " + v.dump() + ", must be in [" + json(lo).dump() + ", " +
+                       json(hi).dump() + "]");
+    }
+    return d;
+  }
+  float real(std::string_view key, double fallback = kRequired, double lo = -HUGE_VAL, double hi = HUGE_VAL) const {
+    return static_cast<float>(number(key, fallback, lo, hi));
+  }
+  std::int64_t integer(std::string_view key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) const {
+    if (!has(key)) return fallback;
+    const json& v = m_value.at(std::string(key));
+    if (!v.is_number_integer() && !v.is_number_unsigned()) {
+      fail_at(key, "'" + std::string(key) + "' must be an integer, found " + type_name(v));
+    }
+    if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(hi)) {
+      fail_at(key, "'" + std::string(key) + "' is " + v.dump() + ", must be in [" + std::to_string(lo) + ", " +
+                       std::to_string(hi) + "]");
+    }
+    const std::int64_t i = v.get<std::int64_t>();
+    if (i < lo || i > hi) {
+      fail_at(key, "'" + std::string(key) + "' is " + v.dump() + ", must be in [" + std::to_string(lo) + ", " +
+                       std::to_string(hi) + "]");
+    }
+    return i;
+  }
+  bool boolean(std::string_view key, bool fallback) const {
+    if (!has(key)) return fallback;
+    const json& v = m_value.at(std::string(key));
+    if (!v.is_boolean()) fail_at(key, "'" + std::string(key) + "' must be true or false, found " + type_name(v));
+    return v.get<bool>();
+  }
+  std::string string(std::string_view key, std::optional<std::string> fallback = std::nullopt) const {
+    if (!has(key)) {
+      if (fallback) return *fallback;
+      fail(m_what + " needs '" + std::string(key) + "'");
+    }
+    const json& v = m_value.at(std::string(key));
+    if (!v.is_string()) fail_at(key, "'" + std::string(key) + "' must be a string, found " + type_name(v));
+    return v.get<std::string>();
+  }
+  std::string choice(std::string_view key, std::initializer_list<std::string_view> valid,
+                     std::optional<std::string> fallback = std::nullopt) const {
+    const std::string s = string(key, fallback);
+    for (auto v : valid)
+      if (s == v) return s;
+    fail_at(key, "'" + std::string(key) + "' is '" + s + "' (valid: " + join(valid) + ")");
+  }
+  Vec3 vec3(std::string_view key, std::optional<Vec3> fallback = std::nullopt) const {
+    if (!has(key)) {
+      if (fallback) return *fallback;
+      fail(m_what + " needs '" + std::string(key) + "'");
+    }
+    return to_vec3(m_value.at(std::string(key)), child_pointer(key), key);
+  }
+  // A colour: [r, g, b], or one number for grey.
+  Color color(std::string_view key, Color fallback) const {
+    if (!has(key)) return fallback;
+    const json& v = m_value.at(std::string(key));
+    if (v.is_number()) {
+      const float g = real(key, kRequired, 0.0);
+      return {g, g, g};
+    }
+    const Vec3 c = to_vec3(v, child_pointer(key), key);
+    if (c.x < 0.f || c.y < 0.f || c.z < 0.f) fail_at(key, "'" + std::string(key) + "' must not be negative");
+    return c;
+  }
+  Vec3 to_vec3(const json& v, const std::string& pointer, std::string_view key) const {
+    if (!v.is_array() || v.size() != 3) {
+      m_doc.fail(pointer, "'" + std::string(key) + "' must be an array of 3 numbers, found " + type_name(v) +
+                              (v.is_array() ? " of " + std::to_string(v.size()) : ""));
+    }
+    Vec3 out;
+    for (int i = 0; i < 3; ++i) {
+      if (!v[i].is_number() || !std::isfinite(v[i].get<double>())) {
+        m_doc.fail(pointer, "'" + std::string(key) + "' must be an array of 3 finite numbers");
+      }
+      out[i] = v[i].get<float>();
+    }
+    return out;
+  }
+  std::string child_pointer(std::string_view key) const { return m_pointer + "/" + json_pointer_escape(key); }
+
+ private:
+  const JsonDocument& m_doc;
+  const json& m_value;
+  std::string m_pointer;
+  std::string m_what;
+};
+
+class SceneReader {
+ public:
+  SceneReader(const JsonDocument& doc, std::string base_dir, const LoadOptions& options)
+      : m_doc(doc), m_base_dir(std::move(base_dir)), m_options(options) {}
+
+  Scene read() {
+    const Node root(m_doc, m_doc.root(), "", "the scene");
+    root.check_keys({"$schema", "version", "description", "camera", "render", "materials", "lights", "meshes",
+                     "objects"});
+    if (!root.has("version")) root.fail("the scene needs \"version\": " + std::to_string(kSceneFormatVersion));
+    const std::int64_t version = root.integer("version", 0, 0, 1 << 30);
+    if (version != kSceneFormatVersion) {
+      root.fail_at("version", "scene format version " + std::to_string(version) + " is not supported (this raylab reads version " +
+                                  std::to_string(kSceneFormatVersion) + ")");
+    }
+    if (root.has("description")) (void)root.string("description");
+    if (root.has("render")) read_render(root.child("render", "'render'"));
+    if (root.has("materials")) read_materials(root.child("materials", "'materials'"));
+    if (root.has("lights")) read_lights(root.child("lights", "'lights'"));
+    if (root.has("meshes")) read_meshes(root.child("meshes", "'meshes'"));
+    if (!root.has("objects")) root.fail("the scene needs 'objects' (an array)");
+    read_objects(root.child("objects", "'objects'"));
+    if (m_scene.geometry.size() == 0) root.fail_at("objects", "the scene has no primitives");
+    const bool has_camera = root.has("camera");
+    const bool has_lights = root.has("lights");
+    if (has_camera) read_camera(root.child("camera", "'camera'"));
+    // Lights and camera of an SPD generator serve when the file gives none; otherwise the
+    // camera is fitted to the scene's bounds, as for a bare mesh.
+    if (!has_lights && m_borrowed) m_scene.lights = m_borrowed->lights;
+    if (!has_camera && m_borrowed) m_scene.camera = m_borrowed->camera;
+    if (!has_camera && !m_borrowed) {
+      const std::vector<Light> lights = m_scene.lights;
+      const RenderSettings settings = m_scene.settings;
+      fit_camera_and_lights(m_scene);
+      m_scene.settings = settings;
+      if (has_lights) m_scene.lights = lights;
+    } else if (!has_lights && !m_borrowed) {
+      root.fail("the scene has a camera but no 'lights'");
+    }
+    return std::move(m_scene);
+  }
+
+ private:
+  void read_render(const Node& n) {
+    n.check_keys({"width", "height", "spp", "sampler", "max_depth", "seed", "background", "ambient", "sky_gradient",
+                  "horizon"});
+    RenderSettings& s = m_scene.settings;
+    s.width = static_cast<int>(n.integer("width", s.width, 1, 32768));
+    s.height = static_cast<int>(n.integer("height", s.height, 1, 32768));
+    s.spp = static_cast<int>(n.integer("spp", s.spp, 1, 1 << 16));
+    s.sampler = n.choice("sampler", {"jittered"}, s.sampler);
+    s.max_depth = static_cast<int>(n.integer("max_depth", s.max_depth, 1, 64));
+    s.seed = static_cast<std::uint64_t>(n.integer("seed", 0, 0, std::numeric_limits<std::int64_t>::max()));
+    s.background = n.color("background", s.background);
+    s.ambient = n.color("ambient", s.ambient);
+    s.sky_gradient = n.boolean("sky_gradient", s.sky_gradient);
+    s.horizon = n.color("horizon", s.horizon);
+  }
+
+  void read_camera(const Node& n) {
+    n.check_keys({"from", "at", "up", "fov", "fov_span", "hither"});
+    CameraSpec& c = m_scene.camera;
+    c.from = n.vec3("from");
+    c.at = n.vec3("at");
+    c.up = n.vec3("up", Vec3{0.f, 1.f, 0.f});
+    c.vfov_degrees = n.real("fov", 45.0, 1e-3, 179.0);
+    c.fov_span = n.choice("fov_span", {"edges", "pixel-centres"}, "edges") == "edges"
+                     ? CameraSpec::FovSpan::kImageEdges
+                     : CameraSpec::FovSpan::kPixelCentres;
+    c.hither = n.real("hither", 0.0, 0.0);
+    const Vec3 forward = c.at - c.from;
+    if (!(dot(forward, forward) > 0.f)) n.fail("camera 'from' and 'at' are the same point");
+    const Vec3 side = cross(forward, c.up);
+    if (!(dot(side, side) > 0.f)) n.fail_at("up", "camera 'up' is parallel to the viewing direction (or zero)");
+  }
+
+  void read_materials(const Node& n) {
+    if (!n.value().is_object()) n.fail("'materials' must be an object mapping names to materials");
+    for (const auto& item : n.value().items()) {
+      const Node m = n.child(item.key(), "material '" + item.key() + "'");
+      m.check_keys({"color", "kd", "ks", "shininess", "reflectivity", "transmittance", "ior", "emission", "fresnel",
+                    "texture"});
+      Material mat;
+      mat.name = item.key();
+      mat.color = m.color("color", mat.color);
+      mat.kd = m.real("kd", mat.kd, 0.0);
+      mat.ks = m.real("ks", mat.ks, 0.0);
+      mat.shininess = m.real("shininess", mat.shininess, 0.0);
+      mat.reflectivity = m.real("reflectivity", mat.reflectivity, 0.0, 1.0);
+      mat.transmittance = m.real("transmittance", mat.transmittance, 0.0, 1.0);
+      mat.ior = m.real("ior", mat.ior, 1e-3, 100.0);
+      mat.emission = m.color("emission", mat.emission);
+      mat.fresnel = m.boolean("fresnel", mat.fresnel);
+      if (m.has("texture")) read_texture(m.child("texture", "texture of material '" + item.key() + "'"), mat);
+      m_materials[item.key()] = m_scene.add_material(mat);
+    }
+  }
+
+  void read_texture(const Node& t, Material& mat) {
+    const std::string type = t.choice("type", {"checker"});
+    t.check_keys({"type", "color2", "scale"});
+    mat.texture.kind = Texture::Kind::kChecker;
+    mat.texture.color2 = t.color("color2", mat.texture.color2);
+    mat.texture.scale = t.real("scale", mat.texture.scale, 1e-9);
+  }
+
+  void read_lights(const Node& n) {
+    if (!n.value().is_array()) n.fail("'lights' must be an array");
+    for (std::size_t i = 0; i < n.value().size(); ++i) {
+      const Node l = n.element(i, "light " + std::to_string(i));
+      if (!l.value().is_object()) l.fail("a light must be an object");
+      const std::string type = l.choice("type", {"point", "directional", "sphere", "quad"});
+      Light light;
+      light.intensity = l.color("intensity", light.intensity);
+      if (type == "point") {
+        l.check_keys({"type", "position", "intensity", "falloff"});
+        light.kind = Light::Kind::kPoint;
+        light.position = l.vec3("position");
+        light.falloff = l.boolean("falloff", false);
+      } else if (type == "directional") {
+        l.check_keys({"type", "direction", "intensity"});
+        light.kind = Light::Kind::kDirectional;
+        light.direction = l.vec3("direction");
+        if (!(dot(light.direction, light.direction) > 0.f)) l.fail_at("direction", "'direction' must not be zero");
+        light.direction = normalize(light.direction);
+      } else if (type == "sphere") {
+        l.check_keys({"type", "center", "radius", "intensity", "falloff", "samples"});
+        light.kind = Light::Kind::kSphere;
+        light.position = l.vec3("center");
+        light.radius = l.real("radius", kRequired, 0.0);
+        light.falloff = l.boolean("falloff", false);
+        light.samples = static_cast<int>(l.integer("samples", light.samples, 1, 4096));
+      } else {
+        l.check_keys({"type", "corner", "edge_u", "edge_v", "intensity", "samples"});
+        light.kind = Light::Kind::kQuad;
+        light.position = l.vec3("corner");
+        light.edge_u = l.vec3("edge_u");
+        light.edge_v = l.vec3("edge_v");
+        light.samples = static_cast<int>(l.integer("samples", light.samples, 1, 4096));
+      }
+      m_scene.lights.push_back(light);
+    }
+  }
+
+  void read_meshes(const Node& n) {
+    if (!n.value().is_object()) n.fail("'meshes' must be an object mapping names to mesh files");
+    for (const auto& item : n.value().items()) {
+      const Node m = n.child(item.key(), "mesh '" + item.key() + "'");
+      m.check_keys({"file"});
+      m_meshes.emplace(item.key(), load_referenced_mesh(m));
+    }
+  }
+
+  Scene load_referenced_mesh(const Node& n) {
+    const std::string reference = n.string("file");
+    const std::string path = resolve_scene_path(m_base_dir, reference, m_options.allow_outside_paths);
+    if (path.empty()) {
+      n.fail_at("file", "'" + reference +
+                            "' is outside the scene's folder; pass --allow-outside-paths to allow references that leave it");
+    }
+    return load_mesh(path, m_options);
+  }
+
+  std::optional<std::uint32_t> material_of(const Node& o, bool required) {
+    if (!o.has("material")) {
+      if (required) o.fail("the object needs a 'material'" + material_list());
+      return std::nullopt;
+    }
+    const std::string name = o.string("material");
+    const auto it = m_materials.find(name);
+    if (it == m_materials.end()) o.fail_at("material", "unknown material '" + name + "'" + material_list());
+    return it->second;
+  }
+
+  std::string material_list() const {
+    std::string names;
+    for (const auto& [name, index] : m_materials) names += (names.empty() ? "" : ", ") + name;
+    return names.empty() ? " (the scene defines no materials)" : " (defined: " + names + ")";
+  }
+
+  Transform read_transform(const Node& o) {
+    if (!o.has("transform")) return Transform::identity();
+    const Node t = o.child("transform", "'transform'");
+    Transform out = Transform::identity();
+    if (t.value().is_object()) return read_transform_step(t);
+    if (!t.value().is_array()) t.fail("'transform' must be an object or an array of them");
+    // Steps apply in the order written: the first one is applied to the object first.
+    for (std::size_t i = 0; i < t.value().size(); ++i) out = read_transform_step(t.element(i, "transform step")) * out;
+    if (!out.valid()) t.fail("the transform is not invertible");
+    return out;
+  }
+
+  Transform read_transform_step(const Node& s) {
+    s.check_keys({"translate", "rotate", "scale", "matrix"});
+    if (s.value().size() != 1) s.fail("a transform step has exactly one of translate, rotate, scale, matrix");
+    if (s.has("translate")) {
+      const Vec3 v = s.vec3("translate");
+      return Transform::translate(v.x, v.y, v.z);
+    }
+    if (s.has("scale")) {
+      if (s.value().at("scale").is_number()) {
+        const double k = s.number("scale");
+        if (k == 0.0) s.fail_at("scale", "'scale' must not be zero");
+        return Transform::scale(k, k, k);
+      }
+      const Vec3 v = s.vec3("scale");
+      if (v.x == 0.f || v.y == 0.f || v.z == 0.f) s.fail_at("scale", "'scale' must not have a zero component");
+      return Transform::scale(v.x, v.y, v.z);
+    }
+    if (s.has("rotate")) {
+      const Node r = s.child("rotate", "'rotate'");
+      r.check_keys({"axis", "degrees"});
+      const Vec3 axis = r.vec3("axis");
+      if (!(dot(axis, axis) > 0.f)) r.fail_at("axis", "'axis' must not be zero");
+      return Transform::rotate(r.number("degrees"), axis);
+    }
+    const json& m = s.value().at("matrix");
+    if (!m.is_array() || m.size() != 16) s.fail_at("matrix", "'matrix' must be an array of 16 numbers (row-major 4x4)");
+    std::array<double, 12> rows{};
+    for (std::size_t i = 0; i < 16; ++i) {
+      if (!m[i].is_number() || !std::isfinite(m[i].get<double>())) s.fail_at("matrix", "'matrix' entries must be finite numbers");
+      if (i < 12) rows[i] = m[i].get<double>();
+    }
+    if (m[12].get<double>() != 0.0 || m[13].get<double>() != 0.0 || m[14].get<double>() != 0.0 ||
+        m[15].get<double>() != 1.0) {
+      s.fail_at("matrix", "'matrix' must be affine: its last row must be 0 0 0 1");
+    }
+    return Transform::from_rows(rows);
+  }
+
+  void read_objects(const Node& n) {
+    if (!n.value().is_array()) n.fail("'objects' must be an array");
+    for (std::size_t i = 0; i < n.value().size(); ++i) {
+      const Node o = n.element(i, "object " + std::to_string(i));
+      if (!o.value().is_object()) o.fail("an object must be a JSON object, found " + type_name(o.value()));
+      const std::string type =
+          o.choice("type", {"sphere", "cylinder", "cone", "disk", "quad", "triangle", "polygon", "mesh", "instance", "spd"});
+      read_object(o, type, i);
+    }
+  }
+
+  void read_object(const Node& o, const std::string& type, std::size_t index) {
+    const std::string name = o.string("name", type + " " + std::to_string(index));
+    Geometry& g = m_scene.geometry;
+    try {
+      if (type == "sphere") {
+        o.check_keys({"type", "name", "material", "center", "radius"});
+        const std::uint32_t obj = m_scene.add_object(name, *material_of(o, true));
+        g.add(Sphere{o.vec3("center"), o.real("radius", kRequired, 1e-30)}, obj);
+      } else if (type == "cylinder") {
+        o.check_keys({"type", "name", "material", "base", "apex", "radius"});
+        const std::uint32_t obj = m_scene.add_object(name, *material_of(o, true));
+        const float r = o.real("radius", kRequired, 1e-30);
+        g.add(Cylinder{o.vec3("base"), r, o.vec3("apex"), r}, obj);
+      } else if (type == "cone") {
+        o.check_keys({"type", "name", "material", "base", "base_radius", "apex", "apex_radius"});
+        const std::uint32_t obj = m_scene.add_object(name, *material_of(o, true));
+        const float r0 = o.real("base_radius", kRequired, 0.0), r1 = o.real("apex_radius", kRequired, 0.0);
+        if (r0 == 0.f && r1 == 0.f) o.fail("a cone needs a radius above zero at one end at least");
+        g.add(Cylinder{o.vec3("base"), r0, o.vec3("apex"), r1}, obj);
+      } else if (type == "disk") {
+        o.check_keys({"type", "name", "material", "center", "normal", "radius"});
+        const std::uint32_t obj = m_scene.add_object(name, *material_of(o, true));
+        const Vec3 normal = o.vec3("normal");
+        if (!(dot(normal, normal) > 0.f)) o.fail_at("normal", "'normal' must not be zero");
+        g.add(Disk{o.vec3("center"), normalize(normal), o.real("radius", kRequired, 1e-30)}, obj);
+      } else if (type == "quad") {
+        o.check_keys({"type", "name", "material", "corner", "edge_u", "edge_v"});
+        const std::uint32_t obj = m_scene.add_object(name, *material_of(o, true));
+        const Quad q{o.vec3("corner"), o.vec3("edge_u"), o.vec3("edge_v")};
+        const Vec3 n = cross(q.edge_u, q.edge_v);
+        if (!(dot(n, n) > 0.f)) o.fail("the quad's edges are parallel (zero area)");
+        g.add(q, obj);
+      } else if (type == "triangle" || type == "polygon") {
+        o.check_keys({"type", "name", "material", "vertices"});
+        const std::uint32_t obj = m_scene.add_object(name, *material_of(o, true));
+        read_polygon(o, obj, type == "triangle");
+      } else if (type == "mesh") {
+        o.check_keys({"type", "name", "material", "file", "transform"});
+        const std::optional<std::uint32_t> material = material_of(o, false);
+        const Transform placement = read_transform(o);
+        append_scene(m_scene, load_referenced_mesh(o), placement, material);
+      } else if (type == "instance") {
+        o.check_keys({"type", "name", "material", "mesh", "transform"});
+        const std::string mesh = o.string("mesh");
+        const auto it = m_meshes.find(mesh);
+        if (it == m_meshes.end()) o.fail_at("mesh", "unknown mesh '" + mesh + "'" + mesh_list());
+        append_scene(m_scene, it->second, read_transform(o), material_of(o, false));
+      } else {
+        o.check_keys({"type", "name", "material", "generator", "size", "transform"});
+        std::string source = "spd:" + o.string("generator");
+        if (o.has("size")) source += "?size=" + std::to_string(o.integer("size", 1, 1, 1 << 20));
+        Scene spd = make_spd_scene(source);
+        append_scene(m_scene, spd, read_transform(o), material_of(o, false));
+        if (!m_borrowed) m_borrowed = std::move(spd);
+      }
+    } catch (const UsageError& e) {
+      // Generator names and transforms that cannot apply are errors in the file, at this object.
+      o.fail(e.what());
+    }
+  }
+
+  void read_polygon(const Node& o, std::uint32_t obj, bool triangle) {
+    if (!o.has("vertices")) o.fail("the object needs 'vertices'");
+    const Node v = o.child("vertices", "'vertices'");
+    if (!v.value().is_array() || v.value().size() < 3 || (triangle && v.value().size() != 3)) {
+      v.fail(std::string("'vertices' must be an array of ") + (triangle ? "3" : "3 or more") + " points");
+    }
+    std::vector<Vec3> corners;
+    for (std::size_t k = 0; k < v.value().size(); ++k) {
+      corners.push_back(o.to_vec3(v.value()[k], v.pointer() + "/" + std::to_string(k), "vertices"));
+    }
+    MeshLoadReport report;
+    add_polygon(m_scene.geometry, corners, {}, {}, obj, report);
+    if (report.triangles == 0) o.fail("the polygon has zero area");
+  }
+
+  std::string mesh_list() const {
+    std::string names;
+    for (const auto& [name, mesh] : m_meshes) names += (names.empty() ? "" : ", ") + name;
+    return names.empty() ? " (the scene defines no 'meshes')" : " (defined: " + names + ")";
+  }
+
+  const JsonDocument& m_doc;
+  std::string m_base_dir;
+  LoadOptions m_options;
+  Scene m_scene;
+  std::map<std::string, std::uint32_t> m_materials;
+  std::map<std::string, Scene> m_meshes;  // loaded once, placed by every instance
+  std::optional<Scene> m_borrowed;        // the first SPD generator's scene: camera and lights
+};
+
+}  // namespace
+
+Scene parse_scene_json(std::string_view text, const std::string& file, const std::string& base_dir,
+                       const LoadOptions& options) {
+  const JsonDocument doc(text, file);
+  return SceneReader(doc, base_dir, options).read();
+}
+
+Scene load_scene_json(const std::string& path, const LoadOptions& options) {
+  const std::string text = read_file(path);
+  return parse_scene_json(text, path, folder_of(path), options);
+}
+
+}  // namespace raylab

@@ -1,0 +1,75 @@
+#include "raylab/render/spd_protocol.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <vector>
+
+#include "raylab/render/camera.h"
+#include "raylab/render/whitted.h"
+
+namespace raylab {
+
+SpdProtocolResult render_spd_protocol(Scene& scene, const Accelerator& accel, Film& film, const RenderOptions& options) {
+  const int n = kSpdProtocolSize;
+  if (film.width() != n || film.height() != n) throw std::invalid_argument("SPD protocol film must be 512 x 512");
+  RenderSettings& settings = scene.settings;
+  settings.width = n;
+  settings.height = n;
+  settings.max_depth = 5;
+  CameraSpec spec = scene.camera;
+  spec.fov_span = CameraSpec::FovSpan::kImageEdges;
+  const Camera camera(spec, n, n);
+
+  const int corners = n + 1;
+  std::vector<Color> corner(static_cast<std::size_t>(corners) * corners);
+  tbb::enumerable_thread_specific<RenderStats> thread_stats;
+  std::atomic<int> rows_done{0};
+  const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  tbb::task_arena arena(threads);
+  const auto start = std::chrono::steady_clock::now();
+  arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<int>(0, corners, 1), [&](const tbb::blocked_range<int>& rows) {
+        RenderStats& stats = thread_stats.local();
+        const TraceContext ctx{scene, accel, stats, options.count_traversal};
+        for (int y = rows.begin(); y != rows.end(); ++y) {
+          for (int x = 0; x < corners; ++x) {
+            // SPD scenes have point lights only; the generator is there for area lights, seeded
+            // by the corner so the image is the same for any thread count.
+            Pcg32 rng(hash_seed(settings.seed, static_cast<std::uint64_t>(y) * corners + x));
+            const Ray ray = camera.generate(static_cast<float>(x), static_cast<float>(y));
+            corner[static_cast<std::size_t>(y) * corners + x] =
+                WhittedIntegrator::trace(ctx, ray, 1, RayKind::kPrimary, rng);
+          }
+          const int done = rows_done.fetch_add(1, std::memory_order_relaxed) + 1;
+          if (options.on_progress) options.on_progress(done, corners);
+        }
+      });
+    });
+
+  SpdProtocolResult result;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (int y = 0; y < n; ++y) {
+    for (int x = 0; x < n; ++x) {
+      const auto c = [&](int dx, int dy) { return corner[static_cast<std::size_t>(y + dy) * corners + x + dx]; };
+      film.at(x, y) = (c(0, 0) + c(1, 0) + c(0, 1) + c(1, 1)) * 0.25f;
+    }
+  }
+  for (const RenderStats& st : thread_stats) result.stats += st;
+  const auto kind = [](RayKind k) { return static_cast<int>(k); };
+  const RenderStats& s = result.stats;
+  result.counts.primary = s.rays[kind(RayKind::kPrimary)];
+  result.counts.primary_hits = s.ray_hits[kind(RayKind::kPrimary)];
+  result.counts.shadow = s.rays[kind(RayKind::kShadow)];
+  result.counts.shadow_hits = s.ray_hits[kind(RayKind::kShadow)];
+  result.counts.secondary = s.rays[kind(RayKind::kReflection)] + s.rays[kind(RayKind::kRefraction)];
+  result.counts.secondary_hits = s.ray_hits[kind(RayKind::kReflection)] + s.ray_hits[kind(RayKind::kRefraction)];
+  return result;
+}
+
+}  // namespace raylab
