@@ -12,6 +12,8 @@ packages=(
   libtinyobjloader-dev
   libembree-dev
   clang-format
+  clang                # libFuzzer targets (make fuzz)
+  python3-jsonschema   # the test that validates shipped scenes against scenes/scene.schema.json
 )
 
 missing=()

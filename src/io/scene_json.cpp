@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <sstream>
 
 #include "raylab/core/error.h"
 #include "raylab/io/json_document.h"
@@ -36,6 +37,21 @@ std::string join(std::initializer_list<std::string_view> names) {
 }
 
 constexpr double kRequired = std::numeric_limits<double>::quiet_NaN();
+// As a lower bound: the value must be greater than zero.
+constexpr double kPositive = std::numeric_limits<double>::denorm_min();
+
+std::string number_text(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+std::string range_text(double lo, double hi) {
+  if (lo == kPositive) return hi == HUGE_VAL ? "must be greater than 0" : "must be in (0, " + number_text(hi) + "]";
+  if (hi == HUGE_VAL) return "must be at least " + number_text(lo);
+  if (lo == -HUGE_VAL) return "must be at most " + number_text(hi);
+  return "must be in [" + number_text(lo) + ", " + number_text(hi) + "]";
+}
 
 // Typed access to one JSON object of the scene, with messages that say where and what.
 class Node {
@@ -76,10 +92,8 @@ class Node {
     const json& v = m_value.at(std::string(key));
     if (!v.is_number()) fail_at(key, "'" + std::string(key) + "' must be a number, found " + type_name(v));
     const double d = v.get<double>();
-    if (!std::isfinite(d) || d < lo || d > hi) {
-      fail_at(key, "'" + std::string(key) + "' is " + v.dump() + ", must be in [" + json(lo).dump() + ", " +
-                       json(hi).dump() + "]");
-    }
+    const bool below = lo == kPositive ? !(d > 0.0) : d < lo;
+    if (!std::isfinite(d) || below || d > hi) fail_at(key, "'" + std::string(key) + "' is " + v.dump() + ", " + range_text(lo, hi));
     return d;
   }
   float real(std::string_view key, double fallback = kRequired, double lo = -HUGE_VAL, double hi = HUGE_VAL) const {
@@ -231,7 +245,7 @@ class SceneReader {
     c.from = n.vec3("from");
     c.at = n.vec3("at");
     c.up = n.vec3("up", Vec3{0.f, 1.f, 0.f});
-    c.vfov_degrees = n.real("fov", 45.0, 1e-3, 179.0);
+    c.vfov_degrees = n.real("fov", 45.0, kPositive, 179.0);
     c.fov_span = n.choice("fov_span", {"edges", "pixel-centres"}, "edges") == "edges"
                      ? CameraSpec::FovSpan::kImageEdges
                      : CameraSpec::FovSpan::kPixelCentres;
@@ -269,7 +283,7 @@ class SceneReader {
     t.check_keys({"type", "color2", "scale"});
     mat.texture.kind = Texture::Kind::kChecker;
     mat.texture.color2 = t.color("color2", mat.texture.color2);
-    mat.texture.scale = t.real("scale", mat.texture.scale, 1e-9);
+    mat.texture.scale = t.real("scale", mat.texture.scale, kPositive);
   }
 
   void read_lights(const Node& n) {
@@ -414,11 +428,11 @@ class SceneReader {
       if (type == "sphere") {
         o.check_keys({"type", "name", "material", "center", "radius"});
         const std::uint32_t obj = m_scene.add_object(name, *material_of(o, true));
-        g.add(Sphere{o.vec3("center"), o.real("radius", kRequired, 1e-30)}, obj);
+        g.add(Sphere{o.vec3("center"), o.real("radius", kRequired, kPositive)}, obj);
       } else if (type == "cylinder") {
         o.check_keys({"type", "name", "material", "base", "apex", "radius"});
         const std::uint32_t obj = m_scene.add_object(name, *material_of(o, true));
-        const float r = o.real("radius", kRequired, 1e-30);
+        const float r = o.real("radius", kRequired, kPositive);
         g.add(Cylinder{o.vec3("base"), r, o.vec3("apex"), r}, obj);
       } else if (type == "cone") {
         o.check_keys({"type", "name", "material", "base", "base_radius", "apex", "apex_radius"});
@@ -431,7 +445,7 @@ class SceneReader {
         const std::uint32_t obj = m_scene.add_object(name, *material_of(o, true));
         const Vec3 normal = o.vec3("normal");
         if (!(dot(normal, normal) > 0.f)) o.fail_at("normal", "'normal' must not be zero");
-        g.add(Disk{o.vec3("center"), normalize(normal), o.real("radius", kRequired, 1e-30)}, obj);
+        g.add(Disk{o.vec3("center"), normalize(normal), o.real("radius", kRequired, kPositive)}, obj);
       } else if (type == "quad") {
         o.check_keys({"type", "name", "material", "corner", "edge_u", "edge_v"});
         const std::uint32_t obj = m_scene.add_object(name, *material_of(o, true));

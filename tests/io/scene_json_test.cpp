@@ -1,0 +1,231 @@
+// The scene format: every shipped scene loads and renders; every mistake a user can make in a
+// scene file is reported at its line and column with a message that says what is valid.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "raylab/accel/factory.h"
+#include "raylab/core/error.h"
+#include "raylab/io/scene_json.h"
+#include "raylab/io/scene_loader.h"
+#include "raylab/render/renderer.h"
+#include "raylab/scene/spd.h"
+
+namespace raylab {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kScenes = fs::path(RAYLAB_SOURCE_DIR) / "scenes";
+
+// Parses `text` as a scene file in `dir`; returns the InputError message, or "" on success.
+std::string error_of(const std::string& text, const std::string& dir = ".", LoadOptions options = {}) {
+  try {
+    parse_scene_json(text, "s.json", dir, options);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const char* kMinimal = R"({"version": 1, "materials": {"m": {}}, "objects": [
+  {"type": "sphere", "material": "m", "center": [0, 0, 0], "radius": 1}]})";
+
+TEST(SceneJson, EveryShippedSceneLoadsAndRenders) {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(kScenes)) {
+    if (entry.path().extension() != ".json" || entry.path().filename() == "scene.schema.json") continue;
+    SCOPED_TRACE(entry.path().string());
+    Scene scene = load_scene(entry.path().string());
+    ASSERT_GT(scene.geometry.size(), 0u);
+    ASSERT_FALSE(scene.lights.empty());
+    scene.settings.width = 48;
+    scene.settings.height = 32;
+    scene.settings.spp = 1;
+    const auto accel = make_accelerator("bvh", scene.geometry);
+    Film film(48, 32);
+    RenderOptions options;
+    options.threads = 1;
+    render(scene, *accel, film, options);
+    // The camera must see the scene: some pixels differ from the background, and none is NaN.
+    int differing = 0;
+    for (int y = 0; y < 32; ++y) {
+      for (int x = 0; x < 48; ++x) {
+        const Color c = film.at(x, y);
+        ASSERT_TRUE(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
+        const Color d = c - scene.settings.background;
+        differing += std::abs(d.x) + std::abs(d.y) + std::abs(d.z) > 0.02f;
+      }
+    }
+    EXPECT_GT(differing, 48 * 32 / 10);
+    ++count;
+  }
+  EXPECT_GE(count, 4);
+}
+
+TEST(SceneJson, MinimalSceneGetsFittedCameraAndDefaults) {
+  const Scene s = parse_scene_json(kMinimal, "s.json", ".");
+  EXPECT_EQ(s.geometry.spheres.size(), 1u);
+  EXPECT_EQ(s.settings.width, RenderSettings{}.width);
+  // No camera in the file: framed from the bounds, looking at the sphere's centre.
+  EXPECT_NEAR(s.camera.at.x, 0.f, 1e-6f);
+  EXPECT_GT(length(s.camera.from - s.camera.at), 1.f);
+  EXPECT_FALSE(s.lights.empty());
+}
+
+TEST(SceneJson, SettingsCameraMaterialsAndLightsAreRead) {
+  const Scene s = parse_scene_json(R"({"version": 1,
+    "camera": {"from": [1, 2, 3], "at": [0, 1, 0], "up": [0, 0, 1], "fov": 30, "fov_span": "pixel-centres", "hither": 0.5},
+    "render": {"width": 33, "height": 17, "spp": 9, "max_depth": 3, "seed": 7, "background": [0.1, 0.2, 0.3]},
+    "materials": {"glass": {"color": 0.5, "transmittance": 0.9, "ior": 1.33, "fresnel": false}},
+    "lights": [{"type": "point", "position": [0, 5, 0], "intensity": [1, 0.5, 0.25], "falloff": true},
+               {"type": "directional", "direction": [0, -2, 0]}],
+    "objects": [{"type": "sphere", "material": "glass", "center": [0, 0, 0], "radius": 2}]})",
+                                   "s.json", ".");
+  EXPECT_EQ(s.settings.width, 33);
+  EXPECT_EQ(s.settings.height, 17);
+  EXPECT_EQ(s.settings.spp, 9);
+  EXPECT_EQ(s.settings.max_depth, 3);
+  EXPECT_EQ(s.settings.seed, 7u);
+  EXPECT_FLOAT_EQ(s.settings.background.z, 0.3f);
+  EXPECT_FLOAT_EQ(s.camera.from.z, 3.f);
+  EXPECT_FLOAT_EQ(s.camera.up.z, 1.f);
+  EXPECT_FLOAT_EQ(s.camera.vfov_degrees, 30.f);
+  EXPECT_EQ(s.camera.fov_span, CameraSpec::FovSpan::kPixelCentres);
+  EXPECT_FLOAT_EQ(s.camera.hither, 0.5f);
+  ASSERT_EQ(s.materials.size(), 1u);
+  EXPECT_EQ(s.materials[0].name, "glass");
+  EXPECT_FLOAT_EQ(s.materials[0].color.y, 0.5f);
+  EXPECT_FLOAT_EQ(s.materials[0].ior, 1.33f);
+  EXPECT_FALSE(s.materials[0].fresnel);
+  ASSERT_EQ(s.lights.size(), 2u);
+  EXPECT_TRUE(s.lights[0].falloff);
+  EXPECT_FLOAT_EQ(s.lights[0].intensity.z, 0.25f);
+  EXPECT_EQ(s.lights[1].kind, Light::Kind::kDirectional);
+  EXPECT_FLOAT_EQ(s.lights[1].direction.y, -1.f);  // normalised
+}
+
+TEST(SceneJson, TransformsApplyInTheOrderWritten) {
+  const fs::path dir = fs::temp_directory_path() / ("raylab-json-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "tri.obj") << "v 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n";
+  // Scale by 2, then rotate 90 degrees about z (x -> y), then translate by (10, 0, 0):
+  // (1, 0, 0) -> (2, 0, 0) -> (0, 2, 0) -> (10, 2, 0).
+  const std::string text = R"({"version": 1, "materials": {"m": {}}, "lights": [{"type": "point", "position": [0, 9, 0]}],
+    "camera": {"from": [0, 0, 9], "at": [0, 0, 0]},
+    "meshes": {"t": {"file": "tri.obj"}},
+    "objects": [
+      {"type": "mesh", "file": "tri.obj", "material": "m",
+       "transform": [{"scale": 2}, {"rotate": {"axis": [0, 0, 1], "degrees": 90}}, {"translate": [10, 0, 0]}]},
+      {"type": "instance", "mesh": "t", "transform": {"matrix": [1, 0, 0, 5, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}},
+      {"type": "instance", "mesh": "t", "transform": {"scale": [-1, 1, 1]}}]})";
+  const Scene s = parse_scene_json(text, (dir / "s.json").string(), dir.string());
+  ASSERT_EQ(s.geometry.triangles.size(), 3u);
+  const Triangle& a = s.geometry.triangles[0];
+  EXPECT_NEAR(a.p0.x, 10.f, 1e-5f);
+  EXPECT_NEAR(a.p0.y, 2.f, 1e-5f);
+  EXPECT_NEAR(a.p0.z, 0.f, 1e-5f);
+  EXPECT_NEAR(s.geometry.triangles[1].p0.x, 6.f, 1e-6f);
+  // The mirror keeps the outward side outward: the winding is flipped back.
+  const Vec3 n_orig = triangle_normal(Triangle{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}});
+  const Vec3 n_mirror = triangle_normal(s.geometry.triangles[2]);
+  EXPECT_LT(n_mirror.x * n_orig.x, 0.f);  // x component mirrored
+  EXPECT_GT(n_mirror.y * n_orig.y, 0.f);  // others kept: the normal is the mirror image
+  fs::remove_all(dir);
+}
+
+TEST(SceneJson, SpdGeneratorObjectBringsItsCameraAndLights) {
+  const Scene s = parse_scene_json(R"({"version": 1, "objects": [{"type": "spd", "generator": "balls", "size": 1}]})",
+                                   "s.json", ".");
+  const Scene direct = make_spd_scene("spd:balls?size=1");
+  EXPECT_EQ(s.geometry.spheres.size(), direct.geometry.spheres.size());
+  EXPECT_EQ(s.lights.size(), direct.lights.size());
+  EXPECT_FLOAT_EQ(s.camera.from.x, direct.camera.from.x);
+}
+
+// Each mistake, the position reported, and the words the message must contain.
+struct BadScene {
+  const char* text;
+  const char* position;
+  const char* words;
+};
+
+TEST(SceneJson, MistakesAreReportedWithLineColumnAndValidChoices) {
+  const BadScene cases[] = {
+      {"{\"version\": 1, \"objcts\": []}", "s.json:1:16:", "unknown key 'objcts' in the scene (valid: $schema, version"},
+      {"{\"version\": 1,\n \"objects\": [\n  {\"type\": \"sphere\", \"material\": \"m\", \"centre\": [0,0,0]}]}",
+       "s.json:3:39:", "unknown key 'centre' in object 0 (valid: type, name, material, center, radius)"},
+      {"{\"version\": 2, \"objects\": []}", "s.json:1:2:", "version 2 is not supported"},
+      {"{\"objects\": []}", "s.json:1:1:", "needs \"version\": 1"},
+      {"{\"version\": 1, \"render\": {\"width\": \"wide\"}, \"objects\": []}", "s.json:1:27:",
+       "'width' must be an integer, found a string"},
+      {"{\"version\": 1, \"render\": {\"spp\": 0}, \"objects\": []}", "s.json:1:27:", "'spp' is 0, must be in [1, 65536]"},
+      {"{\"version\": 1, \"render\": {\"sampler\": \"sobol\"}, \"objects\": []}", "s.json:1:27:", "(valid: jittered)"},
+      {"{\"version\": 1, \"objects\": [{\"type\": \"sphere\", \"material\": \"nope\", \"center\": [0,0,0], \"radius\": 1}]}",
+       "s.json:1:47:", "unknown material 'nope' (the scene defines no materials)"},
+      {"{\"version\": 1, \"objects\": [{\"type\": \"blob\"}]}", "s.json:1:29:", "'type' is 'blob' (valid: sphere,"},
+      {"{\"version\": 1, \"materials\": {\"m\": {}}, \"objects\": [{\"type\": \"sphere\", \"material\": \"m\", \"center\": [0,0], "
+       "\"radius\": 1}]}",
+       "s.json:1:88:", "'center' must be an array of 3 numbers, found an array of 2"},
+      {"{\"version\": 1, \"materials\": {\"m\": {}}, \"objects\": [{\"type\": \"sphere\", \"material\": \"m\", \"center\": [0,0,0], "
+       "\"radius\": -1}]}",
+       "s.json:1:107:", "'radius' is -1, must be greater than 0"},
+      {"{\"version\": 1,\n \"objects\": [}", "s.json:2:14:", "JSON"},
+      {"{\"version\": 1, \"version\": 1}", "s.json:1:16:", "duplicate key 'version'"},
+      {"{\"version\": 1, \"objects\": [{\"type\": \"instance\", \"mesh\": \"bunny\"}]}", "s.json:1:49:",
+       "unknown mesh 'bunny'"},
+      {"{\"version\": 1, \"objects\": [{\"type\": \"spd\", \"generator\": \"balls\", \"transform\": {\"scale\": [1, 2, 1]}}]}",
+       "s.json:1:28:", "non-uniform scale"},
+      {"{\"version\": 1, \"objects\": [{\"type\": \"spd\", \"generator\": \"ballz\"}]}", "s.json:1:28:",
+       "unknown SPD scene 'ballz'"},
+      {"[1, 2]", "s.json:1:1:", "must be an object"},
+      {"", "s.json:1:1:", "JSON"},
+      {"{\"version\": 1, \"objects\": []}", "s.json:1:16:", "no primitives"},
+  };
+  for (const BadScene& c : cases) {
+    SCOPED_TRACE(c.text);
+    const std::string message = error_of(c.text);
+    EXPECT_TRUE(message.starts_with(c.position)) << message;
+    EXPECT_NE(message.find(c.words), std::string::npos) << message;
+  }
+}
+
+TEST(SceneJson, DeepNestingIsRefusedNotARecursionCrash) {
+  std::string text = "{\"version\": 1, \"description\": ";
+  text += std::string(100000, '[');
+  const std::string message = error_of(text);
+  EXPECT_NE(message.find("deeper than 64"), std::string::npos) << message;
+}
+
+TEST(SceneJson, PathsLeavingTheSceneFolderAreRefusedUnlessAllowed) {
+  const fs::path root = fs::temp_directory_path() / ("raylab-paths-" + std::to_string(::getpid()));
+  fs::create_directories(root / "scene");
+  std::ofstream(root / "outside.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  std::ofstream(root / "scene" / "inside.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  fs::create_symlink(root / "outside.obj", root / "scene" / "link.obj");
+  auto scene_with = [](const std::string& file) {
+    return "{\"version\": 1, \"materials\": {\"m\": {}},\n \"objects\": [{\"type\": \"mesh\", \"material\": \"m\", \"file\": \"" +
+           file + "\"}]}";
+  };
+  const std::string dir = (root / "scene").string();
+  EXPECT_EQ(error_of(scene_with("inside.obj"), dir), "");
+  for (const std::string& bad :
+       std::vector<std::string>{"../outside.obj", (root / "outside.obj").string(), "link.obj", "./sub/../../outside.obj"}) {
+    SCOPED_TRACE(bad);
+    const std::string message = error_of(scene_with(bad), dir);
+    EXPECT_TRUE(message.starts_with("s.json:2:48:")) << message;
+    EXPECT_NE(message.find("--allow-outside-paths"), std::string::npos) << message;
+    LoadOptions allow;
+    allow.allow_outside_paths = true;
+    EXPECT_EQ(error_of(scene_with(bad), dir, allow), "");
+  }
+  fs::remove_all(root);
+}
+
+}  // namespace
+}  // namespace raylab
