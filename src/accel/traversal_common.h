@@ -36,7 +36,7 @@ inline bool intersect_leaf(const LeafPrimitives& leaf, std::uint32_t first, std:
     bool hit_here;
     if (id < leaf.triangle_count) {
       float t, u, v;
-      hit_here = intersect_triangle(leaf.triangles[i], tri_ray, tmin, tmax, t, u, v);
+      hit_here = intersect_triangle(leaf.triangles[i], tri_ray, tmin, best.tie_limit(id, tmax), t, u, v);
       if (hit_here) {
         tmax = t;
         best = {t, id, u, v};

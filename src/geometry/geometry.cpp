@@ -115,21 +115,22 @@ bool Geometry::intersect(std::uint32_t prim_id, const WatertightRay& wr, Ray& ra
   const ShapeRef r = resolve(prim_id);
   float t = 0.f, u = 0.f, v = 0.f;
   bool found = false;
+  const float tmax = hit.tie_limit(prim_id, ray.tmax);
   switch (r.kind) {
     case ShapeKind::kTriangle:
-      found = intersect_triangle(triangles[r.index], wr, ray.tmin, ray.tmax, t, u, v);
+      found = intersect_triangle(triangles[r.index], wr, ray.tmin, tmax, t, u, v);
       break;
     case ShapeKind::kSphere:
-      found = intersect_sphere(spheres[r.index], ray, ray.tmin, ray.tmax, t);
+      found = intersect_sphere(spheres[r.index], ray, ray.tmin, tmax, t);
       break;
     case ShapeKind::kCylinder:
-      found = intersect_cylinder(cylinders[r.index], ray, ray.tmin, ray.tmax, t, v);
+      found = intersect_cylinder(cylinders[r.index], ray, ray.tmin, tmax, t, v);
       break;
     case ShapeKind::kDisk:
-      found = intersect_disk(disks[r.index], ray, ray.tmin, ray.tmax, t);
+      found = intersect_disk(disks[r.index], ray, ray.tmin, tmax, t);
       break;
     case ShapeKind::kQuad:
-      found = intersect_quad(quads[r.index], ray, ray.tmin, ray.tmax, t, u, v);
+      found = intersect_quad(quads[r.index], ray, ray.tmin, tmax, t, u, v);
       break;
   }
   if (!found) return false;

@@ -2,7 +2,9 @@
 /// \file
 /// Rays and hit records shared by every accelerator.
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <limits>
 
 #include "raylab/core/vec3.h"
@@ -36,6 +38,16 @@ struct Hit {
 
   /// True when a primitive was hit.
   constexpr bool valid() const { return prim_id != kInvalidId; }
+
+  /// The far limit to test primitive `candidate` against, given that this is the closest hit so
+  /// far and `tmax` its distance. Exactly equal distances are resolved toward the lower
+  /// primitive id, so the closest hit (and everything shading derives from it, such as the
+  /// SPD ray counts) does not depend on the order in which a structure visits primitives: a
+  /// candidate with a lower id is tested against the next float above `tmax`, so that a hit at
+  /// exactly `tmax` is taken.
+  float tie_limit(std::uint32_t candidate, float tmax) const {
+    return valid() && candidate < prim_id ? std::nextafter(tmax, std::numeric_limits<float>::infinity()) : tmax;
+  }
 };
 
 }  // namespace raylab
