@@ -8,7 +8,7 @@ BUILD_DIR := build/$(PRESET)
 CMAKE_ARGS ?=
 JOBS ?= $(shell nproc)
 
-.PHONY: deps configure demo test bench format clean
+.PHONY: deps configure demo test bench fuzz format clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -28,6 +28,14 @@ test: configure
 bench: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 	bash scripts/bench.sh $(BUILD_DIR)
+
+# Each libFuzzer target for FUZZ_SECONDS, starting from the seeds in fuzz/corpus/NAME; new inputs
+# go to build/fuzz/corpus (never into the repository); a crash stops with the input saved there.
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	cmake --preset fuzz
+	cmake --build build/fuzz -j $(JOBS)
+	bash scripts/fuzz.sh build/fuzz $(FUZZ_SECONDS)
 
 format:
 	clang-format -i $$(git ls-files '*.cpp' '*.h')
