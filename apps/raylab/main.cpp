@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   const raylab::cli::CommandRunner run_render = raylab::cli::add_render_command(app);
   const raylab::cli::CommandRunner run_diff = raylab::cli::add_diff_command(app);
   const raylab::cli::CommandRunner run_info = raylab::cli::add_info_command(app);
+  const raylab::cli::CommandRunner run_convert = raylab::cli::add_convert_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("render")) return run_render();
     if (app.got_subcommand("diff")) return run_diff();
     if (app.got_subcommand("info")) return run_info();
+    if (app.got_subcommand("convert")) return run_convert();
   } catch (const raylab::UsageError& e) {
     std::fprintf(stderr, "raylab: %s\n", e.what());
     return 2;

@@ -17,74 +17,12 @@
 #include "raylab/core/error.h"
 #include "raylab/io/atomic_file.h"
 #include "raylab/io/image_io.h"
+#include "cli_fixture.h"
 
 namespace raylab {
 namespace {
 
-namespace fs = std::filesystem;
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void write_text(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
-
-std::vector<std::string> entries(const fs::path& dir) {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-  return names;
-}
-
-struct CliResult {
-  int code = -1;  ///< exit code; -1 when the process did not exit normally
-  std::string out, err;
-};
-
-// Each test gets `work` (inputs and captured streams) and `out` (where outputs go, and where
-// nothing may be left after a failure), both fresh.
-class Cli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    static std::atomic<int> counter{0};
-    m_root = fs::temp_directory_path() / ("raylab-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    fs::remove_all(m_root);
-    fs::create_directories(work());
-    fs::create_directories(out());
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(m_root, ec);
-  }
-  fs::path work() const { return m_root / "work"; }
-  fs::path out() const { return m_root / "out"; }
-  std::string out_file(const std::string& name) const { return (out() / name).string(); }
-
-  CliResult run(const std::string& args) const {
-    const fs::path so = work() / "stdout.txt", se = work() / "stderr.txt";
-    const std::string cmd =
-        std::string("'") + RAYLAB_BINARY + "' " + args + " >'" + so.string() + "' 2>'" + se.string() + "'";
-    const int status = std::system(cmd.c_str());
-    CliResult r;
-    if (status != -1 && WIFEXITED(status)) r.code = WEXITSTATUS(status);
-    r.out = read_text(so);
-    r.err = read_text(se);
-    return r;
-  }
-
-  // Writes an OBJ file into `work`; returns its path.
-  std::string obj(const std::string& name, const std::string& text) const {
-    const fs::path p = work() / name;
-    write_text(p, text);
-    return p.string();
-  }
-
-  // A failed render must leave the output folder exactly as it was: empty.
-  void expect_out_empty() const { EXPECT_TRUE(entries(out()).empty()) << "left behind: " << entries(out()).front(); }
-
- private:
-  fs::path m_root;
-};
+using namespace cli_test;
 
 // A tiny render of the demo with `flags` appended, writing into the output folder.
 std::string demo_with(const std::string& flags, const std::string& output) {

@@ -1,0 +1,118 @@
+// The scene-facing commands through the real binary: flags override scene files, --list-scenes,
+// --spd-protocol, info, convert, and the exit codes of bad scenes.
+
+#include <gtest/gtest.h>
+
+#include "cli_fixture.h"
+#include "raylab/io/image_io.h"
+#include "raylab/io/nff_loader.h"
+
+namespace raylab {
+namespace {
+
+using namespace cli_test;
+
+const std::string kScenes = std::string(RAYLAB_SOURCE_DIR) + "/scenes/";
+
+TEST_F(Cli, FlagsOverrideTheSceneFilesRenderSettings) {
+  const CliResult r = run("render '" + kScenes + "whitted.json' --width 32 --height 20 --spp 1 -q -o '" +
+                          out_file("w.pfm") + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Film film = read_image(out_file("w.pfm"));
+  EXPECT_EQ(film.width(), 32);  // the file says 640 x 400
+  EXPECT_EQ(film.height(), 20);
+}
+
+TEST_F(Cli, ListScenesNamesBuiltInsAndGenerators) {
+  const CliResult r = run("render --list-scenes");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* name : {"demo", "cornell", "spd:balls", "spd:gears", "spd:mount", "spd:rings", "spd:teapot",
+                           "spd:tetra", "spd:tree", ".json", ".nff", ".ply"}) {
+    EXPECT_NE(r.out.find(name), std::string::npos) << name << "\n" << r.out;
+  }
+}
+
+TEST_F(Cli, SpdProtocolPrintsTheRayCountInvariants) {
+  const CliResult r = run("render 'spd:balls?size=1' --spd-protocol -q -o '" + out_file("p.png") + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto primary = r.out.find("\nprimary ");
+  ASSERT_NE(primary, std::string::npos) << r.out;
+  const std::string row = r.out.substr(primary + 1, r.out.find('\n', primary + 1) - primary - 1);
+  EXPECT_NE(row.find(" 263169 "), std::string::npos) << row;  // 513 x 513 eye rays
+  for (const char* row : {"shadow", "secondary"}) EXPECT_NE(r.out.find(row), std::string::npos) << r.out;
+  const Film film = read_image(out_file("p.png"));
+  EXPECT_EQ(film.width(), 512);
+  // The procedure fixes size and depth; asking for others is a usage error.
+  const CliResult bad = run("render spd:balls --spd-protocol --width 100 -q -o '" + out_file("q.png") + "'");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--spd-protocol"), std::string::npos) << bad.err;
+}
+
+TEST_F(Cli, BadSpdNamesAndSizesAreUsageErrors) {
+  struct Case {
+    const char* source;
+    const char* words;
+  };
+  for (const Case& c : {Case{"spd:nope", "valid: balls, gears, mount, rings, teapot, tetra, tree"},
+                        Case{"'spd:balls?size=99'", "from 1 to"}, Case{"'spd:balls?size=x'", "from 1 to"},
+                        Case{"'spd:balls?depth=2'", "unknown SPD parameter 'depth'"}}) {
+    SCOPED_TRACE(c.source);
+    const CliResult r = run(std::string("render ") + c.source + " -q -o '" + out_file("x.png") + "'");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find(c.words), std::string::npos) << r.err;
+    expect_out_empty();
+  }
+}
+
+TEST_F(Cli, InfoDescribesTheCornellBox) {
+  const CliResult r = run("info cornell");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* words : {"triangles 30", "quads     1", "materials   4", "lights      1", "load time", "memory",
+                            "from (278, 273, -800)"}) {
+    EXPECT_NE(r.out.find(words), std::string::npos) << words << "\n" << r.out;
+  }
+}
+
+TEST_F(Cli, ConvertWritesNffThatReadsBackToTheSameScene) {
+  const CliResult r = run("convert 'spd:balls?size=2' '" + out_file("b.nff") + "' -q");
+  ASSERT_EQ(r.code, 0) << r.err;
+  Scene back;
+  load_nff(out_file("b.nff"), back);
+  EXPECT_EQ(back.geometry.spheres.size(), 91u);  // 1 + 9 + 81
+  const CliResult obj = run("convert 'spd:balls?size=1' '" + out_file("b.obj") + "' --segments 8 -q");
+  ASSERT_EQ(obj.code, 0) << obj.err;
+  const CliResult again = run("info '" + out_file("b.obj") + "'");
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_NE(again.out.find("spheres   0"), std::string::npos) << again.out;  // tessellated
+}
+
+TEST_F(Cli, ConvertRefusesUnknownFormatsAndLeavesNothingOnBadInput) {
+  const CliResult fmt = run("convert demo '" + out_file("x.xyz") + "'");
+  EXPECT_EQ(fmt.code, 2);
+  EXPECT_NE(fmt.err.find(".nff .obj .ply"), std::string::npos) << fmt.err;
+  write_text(work() / "bad.json", "{\"version\": 1,\n  \"objects\": [}\n");
+  const CliResult bad = run("convert '" + (work() / "bad.json").string() + "' '" + out_file("x.ply") + "'");
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.err.find("bad.json:2:"), std::string::npos) << bad.err;
+  expect_out_empty();
+}
+
+TEST_F(Cli, SceneFileReferencesOutsideItsFolderNeedTheFlag) {
+  fs::create_directories(work() / "scene");
+  write_text(work() / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  write_text(work() / "scene" / "s.json",
+             "{\"version\": 1, \"materials\": {\"m\": {}},\n \"objects\": [{\"type\": \"mesh\", \"material\": \"m\", "
+             "\"file\": \"../tri.obj\"}]}");
+  const std::string scene = (work() / "scene" / "s.json").string();
+  const CliResult refused = run("render '" + scene + "' --width 8 --height 8 -q -o '" + out_file("s.png") + "'");
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_NE(refused.err.find("s.json:2:48:"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("--allow-outside-paths"), std::string::npos) << refused.err;
+  expect_out_empty();
+  const CliResult allowed = run("render '" + scene + "' --allow-outside-paths --width 8 --height 8 -q -o '" +
+                                out_file("s.png") + "'");
+  EXPECT_EQ(allowed.code, 0) << allowed.err;
+}
+
+}  // namespace
+}  // namespace raylab
