@@ -27,8 +27,11 @@ std::uint32_t Geometry::add(const Triangle& t, const std::array<Vec3, 3>* normal
   }
   triangles.push_back(t);
   triangle_objects.push_back(object);
-  if (!triangle_normals.empty()) triangle_normals.push_back(normals ? *normals : std::array<Vec3, 3>{});
-  if (!triangle_uvs.empty()) triangle_uvs.push_back(uvs ? *uvs : kBarycentricUvs);
+  // The first triangle with normals or uvs starts the array, even on an empty geometry.
+  if (normals != nullptr || !triangle_normals.empty()) {
+    triangle_normals.push_back(normals ? *normals : std::array<Vec3, 3>{});
+  }
+  if (uvs != nullptr || !triangle_uvs.empty()) triangle_uvs.push_back(uvs ? *uvs : kBarycentricUvs);
   return static_cast<std::uint32_t>(triangles.size() - 1);
 }
 
