@@ -21,6 +21,7 @@ void NffSceneBuilder::view(const NffView& view) {
   cam.hither = static_cast<float>(view.hither);
   m_scene.settings.width = view.xres;
   m_scene.settings.height = view.yres;
+  m_scene.camera_from_file = true;
 }
 
 void NffSceneBuilder::background(Color color) { m_scene.settings.background = color; }
@@ -71,10 +72,12 @@ void NffSceneBuilder::cone(Vec3 base, float base_radius, Vec3 apex, float apex_r
 }
 
 void NffSceneBuilder::polygon(std::span<const Vec3> vertices) {
+  m_report.vertices += vertices.size();
   add_polygon(m_scene.geometry, vertices, {}, {}, current_object(), m_report);
 }
 
 void NffSceneBuilder::patch(std::span<const Vec3> vertices, std::span<const Vec3> normals) {
+  m_report.vertices += vertices.size();
   add_polygon(m_scene.geometry, vertices, normals, {}, current_object(), m_report);
 }
 
