@@ -9,7 +9,7 @@ packages=(
   libtbb-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev
   libstb-dev libopenexr-dev
-  libtinyobjloader-dev
+  libtinyobjloader-dev libtinygltf-dev
   libembree-dev
   clang-format
   clang                # libFuzzer targets (make fuzz)

@@ -50,8 +50,9 @@ inline bool hit_node(const BvhNode& node, const BvhBoxRay& r, float tmin, float 
   t_far = tx1 < t_far ? tx1 : t_far;
   t_far = ty1 < t_far ? ty1 : t_far;
   t_far = tz1 < t_far ? tz1 : t_far;
-  t_far *= kSlabWiden;
-  t_far = t_far < tmax ? t_far : tmax;
+  // Both limits are widened: a primitive lying in a box face can be hit at a distance that
+  // rounds just below the box's computed entry, and just below the current closest hit.
+  t_far = (t_far < tmax ? t_far : tmax) * kSlabWiden;
   t_enter = t_near;
   return t_near <= t_far;
 }

@@ -85,7 +85,9 @@ bool Bvh4::traverse_octant(Ray& ray, Hit& hit, TraversalStats* stats) const {
     const Float4 tz0 = (Float4::load(kNearZ ? node.hi[2] : node.lo[2]) - oz) * iz;
     const Float4 tz1 = (Float4::load(kNearZ ? node.lo[2] : node.hi[2]) - oz) * iz;
     const Float4 t_near = max(tz0, max(ty0, max(tx0, Float4::broadcast(tmin))));
-    const Float4 t_far = min(min(tz1, min(ty1, min(tx1, infinity))) * widen, Float4::broadcast(tmax));
+    // Widened after the closest-hit limit too: a primitive in a box face can be hit at a
+    // distance that rounds just below the box's computed entry and the current closest hit.
+    const Float4 t_far = min(min(tz1, min(ty1, min(tx1, infinity))), Float4::broadcast(tmax)) * widen;
     int mask = less_equal_mask(t_near, t_far);
     alignas(16) float t_enter[4];
     t_near.store(t_enter);

@@ -115,7 +115,7 @@ class TraversalStack {
   bool pop(float tmax, std::uint32_t& node) {
     while (m_size > 0) {
       const Entry& e = m_entries[--m_size];
-      if (kAnyHit || e.t_enter <= tmax) {
+      if (kAnyHit || e.t_enter <= tmax * kSlabWiden) {  // widened as the box test is
         node = e.node;
         return true;
       }

@@ -7,8 +7,13 @@
 
 #include "raylab/core/error.h"
 #include "raylab/io/file_extension.h"
+#include "raylab/io/gltf_loader.h"
+#include "raylab/io/nff_loader.h"
 #include "raylab/io/obj_loader.h"
+#include "raylab/io/off_loader.h"
+#include "raylab/io/ply_loader.h"
 #include "raylab/io/scene_json.h"
+#include "raylab/io/stl_loader.h"
 #include "raylab/scene/spd.h"
 #include "raylab/scene/builtin_scenes.h"
 
@@ -79,16 +84,35 @@ std::string extension_list() {
 Scene load_mesh(const std::string& path, const LoadOptions& options) {
   const std::string ext = lowercase_extension(path);
   Scene scene;
+  if (ext == ".gltf" || ext == ".glb") {
+    GltfLoadOptions gltf;
+    gltf.allow_outside_paths = options.allow_outside_paths;
+    gltf.use_camera = true;
+    load_gltf(path, scene, gltf);
+    return scene;
+  }
   const std::string name = std::filesystem::path(path).filename().string();
   if (ext == ".obj") {
+    ObjLoadOptions obj;
+    obj.allow_outside_paths = options.allow_outside_paths;
     const std::uint32_t object = scene.add_object(name, scene.add_material(default_mesh_material()));
-    note_dropped(scene, path, load_obj(path, scene, object));
+    note_dropped(scene, path, load_obj(path, scene, object, obj));
     return scene;
   }
   const std::uint32_t object = scene.add_object(name, scene.add_material(default_mesh_material()));
-  (void)object;
-  (void)options;
-  throw UsageError("cannot load '" + path + "' as a mesh: unsupported format '" + ext + "' (meshes: .obj)");
+  MeshLoadReport report;
+  if (ext == ".ply") {
+    report = load_ply(path, scene, object);
+  } else if (ext == ".off") {
+    report = load_off(path, scene, object);
+  } else if (ext == ".stl") {
+    report = load_stl(path, scene, object);
+  } else {
+    throw UsageError("cannot load '" + path + "' as a mesh: unsupported format '" + ext +
+                     "' (meshes: .obj .gltf .glb .ply .off .stl)");
+  }
+  note_dropped(scene, path, report);
+  return scene;
 }
 
 Scene load_scene(const std::string& source, const LoadOptions& options) {
@@ -96,6 +120,12 @@ Scene load_scene(const std::string& source, const LoadOptions& options) {
   if (is_spd_source(source)) return make_spd_scene(source);
   const std::string ext = lowercase_extension(source);
   if (ext == ".json") return load_scene_json(source, options);
+  if (ext == ".nff") {
+    Scene scene;
+    note_dropped(scene, source, load_nff(source, scene));
+    if (scene.geometry.size() == 0) throw InputError(source, "the scene has no primitives");
+    return scene;
+  }
   const bool mesh = ext == ".obj" || ext == ".gltf" || ext == ".glb" || ext == ".ply" || ext == ".off" || ext == ".stl";
   if (mesh) {
     Scene scene = load_mesh(source, options);

@@ -1,8 +1,52 @@
 #include "raylab/scene/material.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace raylab {
+namespace {
+
+// `i` wrapped into [0, n) (repeat addressing); `i` may be one step outside on either side.
+int wrap(int i, int n) {
+  const int r = i % n;
+  return r < 0 ? r + n : r;
+}
+
+}  // namespace
+
+TextureImage::TextureImage(int width, int height, std::vector<Color> texels)
+    : m_width(width), m_height(height), m_texels(std::move(texels)) {
+  if (width <= 0 || height <= 0 ||
+      m_texels.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
+    throw std::invalid_argument("TextureImage: " + std::to_string(m_texels.size()) + " texels for " +
+                                std::to_string(width) + " x " + std::to_string(height));
+  }
+}
+
+Color TextureImage::sample(float u, float v) const {
+  if (!std::isfinite(u) || !std::isfinite(v)) return texel(0, 0);
+  // Reduce to [0, 1] first (in double, so that large coordinates keep their fraction) so the
+  // texel positions below stay small integers whatever u and v were.
+  const double fu = double(u) - std::floor(double(u));
+  const double fv = double(v) - std::floor(double(v));
+  // Position in texel units relative to the centre of the top-left texel; v counts upwards
+  // while rows count downwards, hence 1 - v.
+  const double x = fu * m_width - 0.5;
+  const double y = (1.0 - fv) * m_height - 0.5;
+  const double x_floor = std::floor(x);
+  const double y_floor = std::floor(y);
+  const float tx = static_cast<float>(x - x_floor);
+  const float ty = static_cast<float>(y - y_floor);
+  const int x0 = wrap(static_cast<int>(x_floor), m_width);
+  const int y0 = wrap(static_cast<int>(y_floor), m_height);
+  const int x1 = wrap(x0 + 1, m_width);
+  const int y1 = wrap(y0 + 1, m_height);
+  const Color top = texel(x0, y0) * (1.f - tx) + texel(x1, y0) * tx;
+  const Color bottom = texel(x0, y1) * (1.f - tx) + texel(x1, y1) * tx;
+  return top * (1.f - ty) + bottom * ty;
+}
 
 Color diffuse_color(const Material& m, float u, float v) {
   if (m.texture.kind == Texture::Kind::kChecker) {
@@ -11,6 +55,7 @@ Color diffuse_color(const Material& m, float u, float v) {
     const auto iv = static_cast<long long>(std::floor(v / s));
     return ((iu + iv) & 1) == 0 ? m.color : m.texture.color2;
   }
+  if (m.texture.kind == Texture::Kind::kImage && m.texture.image) return m.color * m.texture.image->sample(u, v);
   return m.color;
 }
 

@@ -1,18 +1,43 @@
 #pragma once
 /// \file
-/// Whitted/Phong materials and the procedural checker texture.
+/// Whitted/Phong materials, the procedural checker texture and image textures.
 
+#include <memory>
 #include <string>
+#include <utility>
 
 #include "raylab/core/vec3.h"
+#include "raylab/scene/texture_image.h"
 
 namespace raylab {
 
-/// A procedural texture for the diffuse colour. `kNone` uses the material's colour.
+/// A variation of the diffuse colour over the surface. `kNone` uses the material's colour;
+/// `kChecker` alternates it with `color2`; `kImage` multiplies it by `image` at the surface's
+/// texture coordinates (as glTF's baseColorFactor x baseColorTexture and MTL's Kd x map_Kd do).
 struct Texture {
-  enum class Kind { kNone, kChecker } kind = Kind::kNone;
+  /// Which variation applies.
+  enum class Kind { kNone, kChecker, kImage };
+
+  /// No texture.
+  Texture() = default;
+  /// A procedural texture from its kind, second colour and cell size. (A constructor rather than
+  /// aggregate initialisation, so that `{kind, color2, scale}` stays valid and warning-free now
+  /// that the struct has an image member too.)
+  Texture(Kind kind_, Color color2_, float scale_ = 1.f) : kind(kind_), color2(color2_), scale(scale_) {}
+  /// An image texture.
+  static Texture from_image(std::shared_ptr<const TextureImage> image_) {
+    Texture t;
+    t.kind = Kind::kImage;
+    t.image = std::move(image_);
+    return t;
+  }
+
+  Kind kind = Kind::kNone;         ///< which variation applies
   Color color2{0.1f, 0.1f, 0.1f};  ///< the checker's second colour (the first is Material::color)
   float scale = 1.f;               ///< checker cell size in surface-coordinate units
+  /// kImage: the texels (shared: many materials and scene copies may use one decoded image).
+  /// See texture_image.h for the (u, v) convention.
+  std::shared_ptr<const TextureImage> image;
 };
 
 /// Surface response in the spirit of Whitted (1980) and the NFF `f` line: a Phong-lit colour
@@ -27,11 +52,12 @@ struct Material {
   float transmittance = 0.f;      ///< weight of the refracted ray
   float ior = 1.f;                ///< index of refraction (inside / outside)
   Color emission{0.f, 0.f, 0.f};  ///< light emitted towards the viewer, added unshadowed
-  Texture texture;                ///< optional procedural variation of `color`
+  Texture texture;                ///< optional variation of `color` (checker or image)
   bool fresnel = true;            ///< weight reflection/refraction of dielectrics by Fresnel
 };
 
-/// The diffuse colour of `m` at surface coordinates (u, v).
+/// The diffuse colour of `m` at surface coordinates (u, v): the material colour, varied by its
+/// texture. An image texture without an image leaves the colour as it is.
 Color diffuse_color(const Material& m, float u, float v);
 
 }  // namespace raylab

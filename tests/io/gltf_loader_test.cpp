@@ -1,0 +1,549 @@
+// load_gltf: geometry of every index type, node transforms composed as computed by hand, the
+// camera, materials and textures (data: URIs, files, GLB buffer views) and every kind of invalid
+// input refused with an InputError that says where.
+
+#include <gtest/gtest.h>
+#include <stb/stb_image_write.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "raylab/core/error.h"
+#include "raylab/io/gltf_loader.h"
+
+namespace raylab {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+using Bytes = std::vector<unsigned char>;
+
+constexpr int kUnsignedByte = 5121;
+constexpr int kUnsignedShort = 5123;
+constexpr int kUnsignedInt = 5125;
+constexpr int kFloat = 5126;
+
+std::string base64(const Bytes& in) {
+  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < in.size(); i += 3) {
+    const std::uint32_t n = (std::uint32_t{in[i]} << 16) | (i + 1 < in.size() ? std::uint32_t{in[i + 1]} << 8 : 0) |
+                            (i + 2 < in.size() ? std::uint32_t{in[i + 2]} : 0);
+    out += kDigits[(n >> 18) & 63];
+    out += kDigits[(n >> 12) & 63];
+    out += i + 1 < in.size() ? kDigits[(n >> 6) & 63] : '=';
+    out += i + 2 < in.size() ? kDigits[n & 63] : '=';
+  }
+  return out;
+}
+
+void sink(void* context, void* data, int size) {
+  auto* out = static_cast<Bytes*>(context);
+  out->insert(out->end(), static_cast<unsigned char*>(data), static_cast<unsigned char*>(data) + size);
+}
+
+// A 2 x 1 PNG, left texel red, right texel blue.
+Bytes red_blue_png() {
+  const unsigned char rgb[] = {255, 0, 0, 0, 0, 255};
+  Bytes out;
+  stbi_write_png_to_func(sink, &out, 2, 1, 3, rgb, 6);
+  return out;
+}
+
+void put32(Bytes& b, std::uint32_t v) {
+  for (int s = 0; s < 32; s += 8) b.push_back(static_cast<unsigned char>(v >> s));
+}
+
+// Builds a glTF document and its one binary buffer.
+class GltfDoc {
+ public:
+  GltfDoc() {
+    j["asset"] = {{"version", "2.0"}};
+    for (const char* array : {"bufferViews", "accessors", "meshes", "nodes", "materials", "textures", "images"}) {
+      j[array] = json::array();
+    }
+  }
+
+  // Appends raw bytes (4-aligned) as a buffer view; returns its index.
+  int add_view(const Bytes& data) {
+    while (bin.size() % 4 != 0) bin.push_back(0);
+    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", data.size()}});
+    bin.insert(bin.end(), data.begin(), data.end());
+    return static_cast<int>(j["bufferViews"].size()) - 1;
+  }
+  int add_accessor(int view, int component_type, std::size_t count, const char* type) {
+    j["accessors"].push_back(
+        {{"bufferView", view}, {"componentType", component_type}, {"count", count}, {"type", type}});
+    return static_cast<int>(j["accessors"].size()) - 1;
+  }
+  // Float vectors of `components` each ("VEC3" for 3).
+  int add_floats(const std::vector<float>& values, int components) {
+    Bytes data(values.size() * 4);
+    std::memcpy(data.data(), values.data(), data.size());
+    static const char* kTypes[] = {"", "SCALAR", "VEC2", "VEC3", "VEC4"};
+    return add_accessor(add_view(data), kFloat, values.size() / static_cast<std::size_t>(components),
+                        kTypes[components]);
+  }
+  int add_indices(const std::vector<std::uint32_t>& indices, int component_type) {
+    Bytes data;
+    const int size = component_type == kUnsignedByte ? 1 : component_type == kUnsignedShort ? 2 : 4;
+    for (std::uint32_t i : indices) {
+      for (int b = 0; b < size; ++b) data.push_back(static_cast<unsigned char>(i >> (8 * b)));
+    }
+    return add_accessor(add_view(data), component_type, indices.size(), "SCALAR");
+  }
+  int add_mesh(const json& primitive) {
+    j["meshes"].push_back({{"primitives", json::array({primitive})}});
+    return static_cast<int>(j["meshes"].size()) - 1;
+  }
+  int add_node(const json& node) {
+    j["nodes"].push_back(node);
+    return static_cast<int>(j["nodes"].size()) - 1;
+  }
+  // The unit triangle (0,0,0), (1,0,0), (0,1,0) as a mesh with u16 indices; returns the mesh.
+  int add_triangle_mesh(const json& extra = json::object()) {
+    json primitive = {{"attributes", {{"POSITION", add_floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, 3)}}},
+                      {"indices", add_indices({0, 1, 2}, kUnsignedShort)}};
+    primitive.update(extra);
+    return add_mesh(primitive);
+  }
+
+  // .gltf text, the buffer as a base64 data: URI (unless a buffer was set already).
+  std::string gltf_text() {
+    json doc = j;
+    if (!doc.contains("buffers") && !bin.empty()) {
+      doc["buffers"] =
+          json::array({{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}});
+    }
+    return doc.dump();
+  }
+
+  // .glb bytes: 12-byte header, JSON chunk padded with spaces, BIN chunk padded with zeros.
+  Bytes glb() {
+    json doc = j;
+    doc["buffers"] = json::array({{{"byteLength", bin.size()}}});
+    std::string text = doc.dump();
+    while (text.size() % 4 != 0) text += ' ';
+    Bytes payload = bin;
+    while (payload.size() % 4 != 0) payload.push_back(0);
+    Bytes out = {'g', 'l', 'T', 'F'};
+    put32(out, 2);
+    put32(out, static_cast<std::uint32_t>(12 + 8 + text.size() + 8 + payload.size()));
+    put32(out, static_cast<std::uint32_t>(text.size()));
+    put32(out, 0x4E4F534Au);
+    out.insert(out.end(), text.begin(), text.end());
+    put32(out, static_cast<std::uint32_t>(payload.size()));
+    put32(out, 0x004E4942u);
+    out.insert(out.end(), payload.begin(), payload.end());
+    return out;
+  }
+
+  json j;
+  Bytes bin;
+};
+
+class Gltf : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    static std::atomic<int> counter{0};
+    m_root =
+        fs::temp_directory_path() / ("raylab-gltf-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    m_dir = m_root / "scene";
+    fs::remove_all(m_root);
+    fs::create_directories(m_dir);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(m_root, ec);
+  }
+
+  std::string write(const fs::path& path, const Bytes& bytes) {
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    return path.string();
+  }
+  std::string write(const fs::path& path, const std::string& text) {
+    return write(path, Bytes(text.begin(), text.end()));
+  }
+
+  void load(GltfDoc& doc, const GltfLoadOptions& options = {}) {
+    m_path = write(m_dir / "scene.gltf", doc.gltf_text());
+    load_gltf(m_path, m_scene, options);
+  }
+
+  // Loads `path`, which must fail with an InputError naming it and containing `fragment`.
+  void expect_error_in(const std::string& path, const std::string& fragment, const GltfLoadOptions& options = {}) {
+    try {
+      load_gltf(path, m_scene, options);
+      ADD_FAILURE() << "no error for " << path;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), path);
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  }
+  void expect_error(GltfDoc& doc, const std::string& fragment, const GltfLoadOptions& options = {}) {
+    m_path = write(m_dir / "scene.gltf", doc.gltf_text());
+    expect_error_in(m_path, fragment, options);
+  }
+
+  // The scene's material for triangle `t`.
+  const Material& material_of_triangle(std::size_t t) const {
+    return m_scene.materials[m_scene.objects[m_scene.geometry.triangle_objects[t]].material];
+  }
+
+  Scene m_scene;
+  fs::path m_root, m_dir;
+  std::string m_path;
+};
+
+void expect_near(Vec3 got, Vec3 want, float tolerance = 1e-6f) {
+  EXPECT_NEAR(got.x, want.x, tolerance);
+  EXPECT_NEAR(got.y, want.y, tolerance);
+  EXPECT_NEAR(got.z, want.z, tolerance);
+}
+
+TEST_F(Gltf, IndexedTriangleWithEveryIndexType) {
+  for (const int type : {kUnsignedByte, kUnsignedShort, kUnsignedInt}) {
+    Scene scene;
+    GltfDoc doc;
+    const int mesh =
+        doc.add_mesh({{"attributes", {{"POSITION", doc.add_floats({0, 0, 0, 1, 0, 0, 0, 1, 0, 5, 5, 5}, 3)}}},
+                      {"indices", doc.add_indices({2, 0, 1}, type)}});
+    doc.j["scenes"] = json::array({{{"nodes", {doc.add_node({{"mesh", mesh}})}}}});
+    const std::string path = write(m_dir / "t.gltf", doc.gltf_text());
+    load_gltf(path, scene);
+    ASSERT_EQ(scene.geometry.triangles.size(), 1u) << type;
+    EXPECT_EQ(scene.geometry.triangles[0].p0, Vec3(0, 1, 0));
+    EXPECT_EQ(scene.geometry.triangles[0].p1, Vec3(0, 0, 0));
+    EXPECT_EQ(scene.geometry.triangles[0].p2, Vec3(1, 0, 0));
+  }
+}
+
+TEST_F(Gltf, NonIndexedAndStrips) {
+  GltfDoc doc;
+  const int positions = doc.add_floats({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}, 3);
+  const int list = doc.add_mesh({{"attributes", {{"POSITION", doc.add_floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, 3)}}}});
+  const int strip = doc.add_mesh({{"attributes", {{"POSITION", positions}}}, {"mode", 5}});
+  doc.add_node({{"mesh", list}});
+  doc.add_node({{"mesh", strip}});
+  load(doc);  // no scenes: every root node
+  const auto& t = m_scene.geometry.triangles;
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_EQ(t[0].p2, Vec3(0, 1, 0));
+  // Strip 0 1 2 3: triangles (0 1 2) and (2 1 3), the second turned back to the same winding.
+  EXPECT_EQ(t[1].p0, Vec3(0, 0, 0));
+  EXPECT_EQ(t[2].p0, Vec3(0, 1, 0));
+  EXPECT_EQ(t[2].p1, Vec3(1, 0, 0));
+  EXPECT_EQ(t[2].p2, Vec3(1, 1, 0));
+}
+
+TEST_F(Gltf, NodeTransformsCompose) {
+  GltfDoc doc;
+  const int mesh = doc.add_triangle_mesh();
+  const double s = std::sqrt(0.5);
+  // Parent: 90 degrees about +Z. Child: translated by +X, holding the mesh.
+  const int child = 1;
+  doc.add_node({{"rotation", {0, 0, s, s}}, {"children", {child}}});
+  doc.add_node({{"translation", {1, 0, 0}}, {"mesh", mesh}});
+  // A root with a matrix (column-major): scale 2, then translate by (0, 0, 3).
+  doc.add_node({{"matrix", {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 0, 0, 3, 1}}, {"mesh", mesh}});
+  doc.j["scenes"] = json::array({{{"nodes", {0, 2}}}});
+  load(doc, {.placement = Transform::translate(0, 0, 10)});
+  const auto& t = m_scene.geometry.triangles;
+  ASSERT_EQ(t.size(), 2u);
+  // R(p + (1, 0, 0)) with R(x, y, z) = (-y, x, z), then + (0, 0, 10).
+  expect_near(t[0].p0, {0, 1, 10});
+  expect_near(t[0].p1, {0, 2, 10});
+  expect_near(t[0].p2, {-1, 1, 10});
+  expect_near(t[1].p0, {0, 0, 13});
+  expect_near(t[1].p1, {2, 0, 13});
+  expect_near(t[1].p2, {0, 2, 13});
+}
+
+TEST_F(Gltf, MirroringKeepsNormalsOutside) {
+  GltfDoc doc;
+  const int mesh = doc.add_triangle_mesh({{"attributes",
+                                           {{"POSITION", doc.add_floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, 3)},
+                                            {"NORMAL", doc.add_floats({0, 0, 1, 0, 0, 1, 0, 0, 1}, 3)}}}});
+  doc.add_node({{"scale", {1, 1, -1}}, {"mesh", mesh}});
+  load(doc);
+  ASSERT_EQ(m_scene.geometry.triangles.size(), 1u);
+  // Two corners swap so the winding (and the geometric normal) follows the mirrored normal.
+  EXPECT_EQ(m_scene.geometry.triangles[0].p1, Vec3(0, 1, 0));
+  EXPECT_EQ(m_scene.geometry.triangles[0].p2, Vec3(1, 0, 0));
+  ASSERT_EQ(m_scene.geometry.triangle_normals.size(), 1u);
+  expect_near(m_scene.geometry.triangle_normals[0][0], {0, 0, -1});
+}
+
+TEST_F(Gltf, DefaultSceneIsChosen) {
+  GltfDoc doc;
+  const int mesh = doc.add_triangle_mesh();
+  doc.add_node({{"mesh", mesh}, {"translation", {5, 0, 0}}});
+  doc.add_node({{"mesh", mesh}, {"translation", {7, 0, 0}}});
+  doc.j["scenes"] = json::array({{{"nodes", {0}}}, {{"nodes", {1}}}});
+  doc.j["scene"] = 1;
+  load(doc);
+  ASSERT_EQ(m_scene.geometry.triangles.size(), 1u);
+  EXPECT_EQ(m_scene.geometry.triangles[0].p0, Vec3(7, 0, 0));
+}
+
+TEST_F(Gltf, CameraFromTheNodeWorldTransform) {
+  GltfDoc doc;
+  doc.add_triangle_mesh();
+  doc.j["cameras"] = json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}}});
+  const double s = std::sqrt(0.5);
+  // 90 degrees about +Y turns the camera's -Z view direction into -X.
+  doc.add_node({{"translation", {0, 0, 10}}, {"children", {1}}});
+  doc.add_node({{"rotation", {0, s, 0, s}}, {"camera", 0}});
+  doc.add_node({{"mesh", 0}});
+  doc.j["scenes"] = json::array({{{"nodes", {0, 2}}}});
+
+  load(doc);  // use_camera is off by default
+  EXPECT_EQ(m_scene.camera.from, CameraSpec{}.from);
+  EXPECT_FALSE(m_scene.camera_from_file);
+
+  load(doc, {.placement = Transform::translate(0, 5, 0), .use_camera = true});
+  const CameraSpec& c = m_scene.camera;
+  expect_near(c.from, {0, 5, 10});
+  expect_near(c.at, {-1, 5, 10});
+  expect_near(c.up, {0, 1, 0});
+  EXPECT_NEAR(c.vfov_degrees, 0.5 * 180.0 / std::numbers::pi, 1e-4);
+  EXPECT_NEAR(c.hither, 0.1f, 1e-6f);
+  EXPECT_TRUE(m_scene.camera_from_file);
+}
+
+TEST_F(Gltf, MaterialsAndADataUriTexture) {
+  GltfDoc doc;
+  doc.j["images"].push_back({{"uri", "data:image/png;base64," + base64(red_blue_png())}});
+  doc.j["images"].push_back({{"uri", "data:image/png;base64," + base64(Bytes{1, 2, 3, 4})}});  // unused
+  doc.j["textures"].push_back({{"source", 0}});
+  doc.j["materials"].push_back({{"name", "plastic"},
+                                {"pbrMetallicRoughness",
+                                 {{"baseColorFactor", {0.2, 0.4, 0.6, 1.0}},
+                                  {"metallicFactor", 0.0},
+                                  {"roughnessFactor", 0.5},
+                                  {"baseColorTexture", {{"index", 0}}}}}});
+  doc.j["materials"].push_back(
+      {{"pbrMetallicRoughness", {{"metallicFactor", 1.0}, {"roughnessFactor", 0.0}}}, {"emissiveFactor", {1, 0, 0}}});
+  const int uv = doc.add_floats({0, 0, 1, 0, 0, 1}, 2);
+  const int textured = doc.add_triangle_mesh({{"material", 0}});
+  doc.j["meshes"][textured]["primitives"][0]["attributes"]["TEXCOORD_0"] = uv;
+  const int metal = doc.add_triangle_mesh({{"material", 1}});
+  const int plain = doc.add_triangle_mesh();
+  doc.add_node({{"mesh", textured}});
+  doc.add_node({{"mesh", metal}});
+  doc.add_node({{"mesh", plain}});
+  load(doc);
+  ASSERT_EQ(m_scene.geometry.triangles.size(), 3u);
+
+  const Material& plastic = material_of_triangle(0);
+  EXPECT_EQ(plastic.name, "plastic");
+  expect_near(plastic.color, {0.2f, 0.4f, 0.6f});
+  EXPECT_FLOAT_EQ(plastic.ks, 0.5f);
+  EXPECT_FLOAT_EQ(plastic.shininess, 30.f);  // 2 / alpha^2 - 2 with alpha = 0.5^2
+  EXPECT_FLOAT_EQ(plastic.reflectivity, 0.f);
+  EXPECT_FLOAT_EQ(plastic.kd, 1.f);
+  ASSERT_EQ(plastic.texture.kind, Texture::Kind::kImage);
+  ASSERT_TRUE(plastic.texture.image);
+  EXPECT_EQ(plastic.texture.image->texel(0, 0), Color(1, 0, 0));
+  EXPECT_EQ(plastic.texture.image->texel(1, 0), Color(0, 0, 1));
+  // glTF's v points down the image; raylab stores 1 - v.
+  const auto& uvs = m_scene.geometry.triangle_uvs;
+  ASSERT_EQ(uvs.size(), 3u);
+  EXPECT_EQ(uvs[0][0].x, 0.f);
+  EXPECT_EQ(uvs[0][0].y, 1.f);
+  EXPECT_EQ(uvs[0][1].x, 1.f);
+  EXPECT_EQ(uvs[0][1].y, 1.f);
+  EXPECT_EQ(uvs[0][2].y, 0.f);
+
+  const Material& mirror = material_of_triangle(1);
+  EXPECT_EQ(mirror.name, "materials[1]");
+  EXPECT_EQ(mirror.color, Color(1, 1, 1));  // glTF's default base colour
+  EXPECT_FLOAT_EQ(mirror.reflectivity, 1.f);
+  EXPECT_FLOAT_EQ(mirror.kd, 0.f);
+  EXPECT_FLOAT_EQ(mirror.shininess, 1e4f);
+  EXPECT_EQ(mirror.emission, Color(1, 0, 0));
+
+  const Material& none = material_of_triangle(2);
+  EXPECT_EQ(none.color, Material{}.color);
+}
+
+TEST_F(Gltf, ImageFileNextToTheGltf) {
+  write(m_dir / "tex.png", red_blue_png());
+  GltfDoc doc;
+  doc.j["images"].push_back({{"uri", "tex.png"}});
+  doc.j["textures"].push_back({{"source", 0}});
+  doc.j["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 1}}}}}});
+  const int mesh = doc.add_triangle_mesh({{"material", 0}});
+  doc.j["meshes"][mesh]["primitives"][0]["attributes"]["TEXCOORD_1"] = doc.add_floats({0, 0, 1, 0, 0, 1}, 2);
+  doc.add_node({{"mesh", mesh}});
+  load(doc);
+  ASSERT_TRUE(material_of_triangle(0).texture.image);
+  EXPECT_EQ(material_of_triangle(0).texture.image->width(), 2);
+  ASSERT_EQ(m_scene.geometry.triangle_uvs.size(), 1u);
+  EXPECT_EQ(m_scene.geometry.triangle_uvs[0][1].x, 1.f);  // TEXCOORD_1, as the texture asks
+}
+
+TEST_F(Gltf, BinaryGlbWithAnImageInABufferView) {
+  GltfDoc doc;
+  const int view = doc.add_view(red_blue_png());
+  doc.j["images"].push_back({{"bufferView", view}, {"mimeType", "image/png"}});
+  doc.j["textures"].push_back({{"source", 0}});
+  doc.j["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+  const int mesh = doc.add_triangle_mesh({{"material", 0}});
+  doc.j["meshes"][mesh]["primitives"][0]["attributes"]["TEXCOORD_0"] = doc.add_floats({0, 0, 1, 0, 0, 1}, 2);
+  doc.add_node({{"mesh", mesh}, {"translation", {0, 0, -2}}});
+  const std::string path = write(m_dir / "scene.glb", doc.glb());
+  load_gltf(path, m_scene);
+  ASSERT_EQ(m_scene.geometry.triangles.size(), 1u);
+  EXPECT_EQ(m_scene.geometry.triangles[0].p1, Vec3(1, 0, -2));
+  ASSERT_TRUE(material_of_triangle(0).texture.image);
+  EXPECT_EQ(material_of_triangle(0).texture.image->texel(1, 0), Color(0, 0, 1));
+}
+
+TEST_F(Gltf, IndexOutOfRange) {
+  GltfDoc doc;
+  doc.add_mesh({{"attributes", {{"POSITION", doc.add_floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, 3)}}},
+                {"indices", doc.add_indices({0, 1, 812}, kUnsignedShort)}});
+  doc.add_node({{"mesh", 0}});
+  expect_error(doc, "meshes[0].primitives[0]: index 812 out of range (vertex count 3)");
+}
+
+TEST_F(Gltf, BadAccessors) {
+  {
+    GltfDoc doc;
+    doc.add_mesh({{"attributes", {{"POSITION", 7}}}});
+    doc.add_node({{"mesh", 0}});
+    expect_error(doc, "meshes[0].primitives[0] POSITION: accessor index 7 out of range (the file has 0)");
+  }
+  {
+    GltfDoc doc;  // 4 elements of 12 bytes in a 36-byte view
+    const int view = doc.add_view(Bytes(36, 0));
+    doc.add_mesh({{"attributes", {{"POSITION", doc.add_accessor(view, kFloat, 4, "VEC3")}}}});
+    doc.add_node({{"mesh", 0}});
+    expect_error(doc, "accessors[0] (POSITION of meshes[0].primitives[0]): 4 elements from byte 0 do not fit");
+  }
+  {
+    GltfDoc doc;
+    doc.add_mesh(
+        {{"attributes", {{"POSITION", doc.add_accessor(doc.add_view(Bytes(36, 0)), kUnsignedShort, 3, "VEC3")}}}});
+    doc.add_node({{"mesh", 0}});
+    expect_error(doc, "component type UNSIGNED_SHORT is not valid for POSITION");
+  }
+  {
+    GltfDoc doc;  // a view past the end of its buffer
+    doc.add_triangle_mesh();
+    doc.j["bufferViews"][0]["byteLength"] = 400;
+    doc.add_node({{"mesh", 0}});
+    expect_error(doc, "bufferViews[0]: bytes 0 to 400 lie outside buffers[0]");
+  }
+  {
+    GltfDoc doc;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    doc.add_mesh({{"attributes", {{"POSITION", doc.add_floats({0, 0, 0, 1, nan, 0, 0, 1, 0}, 3)}}}});
+    doc.add_node({{"mesh", 0}});
+    expect_error(doc, "meshes[0].primitives[0]: POSITION 1 is not finite");
+  }
+}
+
+TEST_F(Gltf, NodeCycle) {
+  GltfDoc doc;
+  doc.add_triangle_mesh();
+  doc.add_node({{"children", {1}}});
+  doc.add_node({{"children", {0}}, {"mesh", 0}});
+  doc.j["scenes"] = json::array({{{"nodes", {0}}}});
+  expect_error(doc, "nodes[0]: reached twice in the node hierarchy");
+}
+
+TEST_F(Gltf, UriOutsideTheFolderIsRefused) {
+  GltfDoc doc;
+  doc.add_triangle_mesh();
+  doc.add_node({{"mesh", 0}});
+  write(m_root / "outside.bin", doc.bin);
+  for (const std::string& uri :
+       std::vector<std::string>{"../outside.bin", "%2E%2E/outside.bin", (m_root / "outside.bin").string()}) {
+    doc.j["buffers"] = json::array({{{"byteLength", doc.bin.size()}, {"uri", uri}}});
+    expect_error(doc, "leaves the folder of the glTF file");
+  }
+  // Allowed on request; the same file inside the folder needs nothing.
+  load(doc, {.allow_outside_paths = true});
+  EXPECT_EQ(m_scene.geometry.triangles.size(), 1u);
+  write(m_dir / "inside.bin", doc.bin);
+  doc.j["buffers"] = json::array({{{"byteLength", doc.bin.size()}, {"uri", "inside.bin"}}});
+  load(doc);
+  EXPECT_EQ(m_scene.geometry.triangles.size(), 2u);
+  // Images too, even one that no material uses (tinygltf would read it).
+  write(m_root / "outside.png", red_blue_png());
+  doc.j["images"].push_back({{"uri", "../outside.png"}});
+  expect_error(doc, "uri '../outside.png' leaves the folder");
+}
+
+TEST_F(Gltf, MissingBufferFile) {
+  GltfDoc doc;
+  doc.add_triangle_mesh();
+  doc.j["buffers"] = json::array({{{"byteLength", doc.bin.size()}, {"uri", "missing.bin"}}});
+  expect_error(doc, "missing.bin");
+}
+
+TEST_F(Gltf, ImageThatIsNotAnImage) {
+  GltfDoc doc;
+  doc.j["images"].push_back({{"uri", "data:image/png;base64," + base64(Bytes{'n', 'o', 'p', 'e'})}});
+  doc.j["textures"].push_back({{"source", 0}});
+  doc.j["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+  const int mesh = doc.add_triangle_mesh({{"material", 0}});
+  doc.j["meshes"][mesh]["primitives"][0]["attributes"]["TEXCOORD_0"] = doc.add_floats({0, 0, 1, 0, 0, 1}, 2);
+  doc.add_node({{"mesh", mesh}});
+  expect_error(doc, "images[0]: not a PNG or JPEG image");
+  // A texture without the texture coordinates it reads.
+  doc.j["images"][0]["uri"] = "data:image/png;base64," + base64(red_blue_png());
+  doc.j["meshes"][mesh]["primitives"][0]["attributes"].erase("TEXCOORD_0");
+  expect_error(doc, "reads TEXCOORD_0, which the primitive lacks");
+}
+
+TEST_F(Gltf, RequiredExtensionIsRefused) {
+  GltfDoc doc;
+  doc.add_triangle_mesh();
+  doc.j["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  expect_error(doc, "needs extension KHR_draco_mesh_compression");
+}
+
+TEST_F(Gltf, GarbageGlbAndJson) {
+  expect_error_in(
+      write(m_dir / "noise.glb", Bytes{0x13, 0x37, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17}),
+      "not a glTF binary");
+  Bytes header = {'g', 'l', 'T', 'F'};
+  put32(header, 2);
+  put32(header, 1000);  // longer than the file
+  put32(header, 4);
+  put32(header, 0x4E4F534Au);
+  header.insert(header.end(), {'{', '}', ' ', ' '});
+  expect_error_in(write(m_dir / "long.glb", header), "byte 8: the header gives a length of 1000 bytes");
+  header[8] = 24;
+  header[9] = header[10] = header[11] = 0;
+  header[12] = 200;  // JSON chunk longer than the file
+  expect_error_in(write(m_dir / "chunk.glb", header), "the JSON chunk runs past the end");
+  header[12] = 4;
+  expect_error_in(write(m_dir / "empty.glb", header), "not a valid glTF file");  // {} has no asset
+  GltfDoc doc;
+  doc.add_triangle_mesh();
+  Bytes glb = doc.glb();
+  glb.erase(glb.end() - 8, glb.end());  // BIN chunk cut short
+  glb[8] = static_cast<unsigned char>(glb.size());
+  glb[9] = static_cast<unsigned char>(glb.size() >> 8);
+  expect_error_in(write(m_dir / "cut.glb", glb), "the BIN chunk runs past the end");
+  expect_error_in(write(m_dir / "bad.gltf", std::string("{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [")),
+                  "not a valid glTF file");
+  expect_error_in((m_dir / "missing.gltf").string(), "cannot open");
+}
+
+}  // namespace
+}  // namespace raylab
