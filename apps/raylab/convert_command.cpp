@@ -49,8 +49,7 @@ int run(const ConvertArgs& args) {
   }
   write_file_atomically(args.output, std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()));
   if (!args.quiet) {
-    fmt::print("wrote {} ({} primitives, {:.1f} MiB)\n", args.output, scene.geometry.size(),
-               bytes.size() / 1048576.0);
+    fmt::print("wrote {} ({} primitives, {:.1f} MiB)\n", args.output, scene.geometry.size(), bytes.size() / 1048576.0);
   }
   return 0;
 }
@@ -59,9 +58,9 @@ int run(const ConvertArgs& args) {
 
 CommandRunner add_convert_command(CLI::App& app) {
   auto args = std::make_shared<ConvertArgs>();
-  CLI::App* cmd = app.add_subcommand("convert", "Write a scene as NFF, OBJ or binary PLY (format from OUT's extension)");
-  cmd->add_option("input", args->input, "Scene: built-in name, spd:NAME[?size=N], or a scene or mesh file")
-      ->required();
+  CLI::App* cmd =
+      app.add_subcommand("convert", "Write a scene as NFF, OBJ or binary PLY (format from OUT's extension)");
+  cmd->add_option("input", args->input, "Scene: built-in name, spd:NAME[?size=N], or a scene or mesh file")->required();
   cmd->add_option("output", args->output, "Output file: .nff (analytic shapes kept), .obj or .ply (tessellated)")
       ->required();
   cmd->add_option("--segments", args->segments, "Segments around tessellated spheres, cylinders and disks")

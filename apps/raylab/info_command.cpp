@@ -46,8 +46,7 @@ int run(const InfoArgs& args) {
   fmt::print("load time   {:.3f} s\n", seconds);
   fmt::print("memory      {:.2f} MiB (scene arrays; accelerators not built)\n", scene.memory_bytes() / 1048576.0);
   fmt::print("primitives  {}\n", g.size());
-  fmt::print("  triangles {}{}\n", g.triangles.size(),
-             g.triangle_normals.empty() ? "" : " (with shading normals)");
+  fmt::print("  triangles {}{}\n", g.triangles.size(), g.triangle_normals.empty() ? "" : " (with shading normals)");
   fmt::print("  spheres   {}\n  cylinders {} (cylinders and cones)\n  disks     {}\n  quads     {}\n", g.spheres.size(),
              g.cylinders.size(), g.disks.size(), g.quads.size());
   const Box3 b = g.bounds();
@@ -82,8 +81,7 @@ int run(const InfoArgs& args) {
 CommandRunner add_info_command(CLI::App& app) {
   auto args = std::make_shared<InfoArgs>();
   CLI::App* cmd = app.add_subcommand("info", "Describe a scene: primitives, bounds, materials, lights, camera");
-  cmd->add_option("scene", args->scene, "Scene: built-in name, spd:NAME[?size=N], or a scene or mesh file")
-      ->required();
+  cmd->add_option("scene", args->scene, "Scene: built-in name, spd:NAME[?size=N], or a scene or mesh file")->required();
   cmd->add_flag("--allow-outside-paths", args->allow_outside_paths,
                 "Let a scene file reference files outside its own folder");
   return [args] { return run(*args); };

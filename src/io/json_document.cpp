@@ -64,8 +64,7 @@ constexpr std::size_t kMaxDepth = 64;
 // at their opening quote.
 class PositionSax {
  public:
-  PositionSax(std::string_view text, const std::size_t* consumed, const LineIndex& lines, JsonDocument& doc,
-              json& root)
+  PositionSax(std::string_view text, const std::size_t* consumed, const LineIndex& lines, JsonDocument& doc, json& root)
       : m_text(text), m_consumed(consumed), m_lines(lines), m_doc(doc), m_root(root) {}
 
   bool null() { return add(json(nullptr)); }

@@ -11,6 +11,7 @@
 #include "raylab/io/json_document.h"
 #include "raylab/io/read_file.h"
 #include "raylab/io/scene_loader.h"
+#include "raylab/io/texture_io.h"
 #include "raylab/scene/mesh_builder.h"
 #include "raylab/scene/scene_merge.h"
 #include "raylab/scene/spd.h"
@@ -72,7 +73,8 @@ class Node {
     for (const auto& item : m_value.items()) {
       bool known = false;
       for (auto v : valid) known = known || item.key() == v;
-      if (!known) fail_at(item.key(), "unknown key '" + item.key() + "' in " + m_what + " (valid: " + join(valid) + ")");
+      if (!known)
+        fail_at(item.key(), "unknown key '" + item.key() + "' in " + m_what + " (valid: " + join(valid) + ")");
     }
   }
   bool has(std::string_view key) const { return m_value.contains(std::string(key)); }
@@ -93,7 +95,8 @@ class Node {
     if (!v.is_number()) fail_at(key, "'" + std::string(key) + "' must be a number, found " + type_name(v));
     const double d = v.get<double>();
     const bool below = lo == kPositive ? !(d > 0.0) : d < lo;
-    if (!std::isfinite(d) || below || d > hi) fail_at(key, "'" + std::string(key) + "' is " + v.dump() + ", " + range_text(lo, hi));
+    if (!std::isfinite(d) || below || d > hi)
+      fail_at(key, "'" + std::string(key) + "' is " + v.dump() + ", " + range_text(lo, hi));
     return d;
   }
   float real(std::string_view key, double fallback = kRequired, double lo = -HUGE_VAL, double hi = HUGE_VAL) const {
@@ -187,12 +190,13 @@ class SceneReader {
 
   Scene read() {
     const Node root(m_doc, m_doc.root(), "", "the scene");
-    root.check_keys({"$schema", "version", "description", "camera", "render", "materials", "lights", "meshes",
-                     "objects"});
+    root.check_keys(
+        {"$schema", "version", "description", "camera", "render", "materials", "lights", "meshes", "objects"});
     if (!root.has("version")) root.fail("the scene needs \"version\": " + std::to_string(kSceneFormatVersion));
     const std::int64_t version = root.integer("version", 0, 0, 1 << 30);
     if (version != kSceneFormatVersion) {
-      root.fail_at("version", "scene format version " + std::to_string(version) + " is not supported (this raylab reads version " +
+      root.fail_at("version", "scene format version " + std::to_string(version) +
+                                  " is not supported (this raylab reads version " +
                                   std::to_string(kSceneFormatVersion) + ")");
     }
     if (root.has("description")) (void)root.string("description");
@@ -224,8 +228,8 @@ class SceneReader {
 
  private:
   void read_render(const Node& n) {
-    n.check_keys({"width", "height", "spp", "sampler", "max_depth", "seed", "background", "ambient", "sky_gradient",
-                  "horizon"});
+    n.check_keys(
+        {"width", "height", "spp", "sampler", "max_depth", "seed", "background", "ambient", "sky_gradient", "horizon"});
     RenderSettings& s = m_scene.settings;
     s.width = static_cast<int>(n.integer("width", s.width, 1, 32768));
     s.height = static_cast<int>(n.integer("height", s.height, 1, 32768));
@@ -260,8 +264,8 @@ class SceneReader {
     if (!n.value().is_object()) n.fail("'materials' must be an object mapping names to materials");
     for (const auto& item : n.value().items()) {
       const Node m = n.child(item.key(), "material '" + item.key() + "'");
-      m.check_keys({"color", "kd", "ks", "shininess", "reflectivity", "transmittance", "ior", "emission", "fresnel",
-                    "texture"});
+      m.check_keys(
+          {"color", "kd", "ks", "shininess", "reflectivity", "transmittance", "ior", "emission", "fresnel", "texture"});
       Material mat;
       mat.name = item.key();
       mat.color = m.color("color", mat.color);
@@ -279,11 +283,25 @@ class SceneReader {
   }
 
   void read_texture(const Node& t, Material& mat) {
-    const std::string type = t.choice("type", {"checker"});
+    const std::string type = t.choice("type", {"checker", "image"});
+    if (type == "image") {
+      // An image multiplies the material's colour (set "color": 1 to show it as painted).
+      t.check_keys({"type", "file"});
+      const std::string reference = t.string("file");
+      const std::string path = resolve_scene_path(m_base_dir, reference, m_options.allow_outside_paths);
+      if (path.empty()) t.fail_at("file", outside_message(reference));
+      mat.texture = Texture::from_image(load_texture(path));
+      return;
+    }
     t.check_keys({"type", "color2", "scale"});
     mat.texture.kind = Texture::Kind::kChecker;
     mat.texture.color2 = t.color("color2", mat.texture.color2);
     mat.texture.scale = t.real("scale", mat.texture.scale, kPositive);
+  }
+
+  static std::string outside_message(const std::string& reference) {
+    return "'" + reference +
+           "' is outside the scene's folder; pass --allow-outside-paths to allow references that leave it";
   }
 
   void read_lights(const Node& n) {
@@ -336,10 +354,7 @@ class SceneReader {
   Scene load_referenced_mesh(const Node& n) {
     const std::string reference = n.string("file");
     const std::string path = resolve_scene_path(m_base_dir, reference, m_options.allow_outside_paths);
-    if (path.empty()) {
-      n.fail_at("file", "'" + reference +
-                            "' is outside the scene's folder; pass --allow-outside-paths to allow references that leave it");
-    }
+    if (path.empty()) n.fail_at("file", outside_message(reference));
     return load_mesh(path, m_options);
   }
 
@@ -400,7 +415,8 @@ class SceneReader {
     if (!m.is_array() || m.size() != 16) s.fail_at("matrix", "'matrix' must be an array of 16 numbers (row-major 4x4)");
     std::array<double, 12> rows{};
     for (std::size_t i = 0; i < 16; ++i) {
-      if (!m[i].is_number() || !std::isfinite(m[i].get<double>())) s.fail_at("matrix", "'matrix' entries must be finite numbers");
+      if (!m[i].is_number() || !std::isfinite(m[i].get<double>()))
+        s.fail_at("matrix", "'matrix' entries must be finite numbers");
       if (i < 12) rows[i] = m[i].get<double>();
     }
     if (m[12].get<double>() != 0.0 || m[13].get<double>() != 0.0 || m[14].get<double>() != 0.0 ||
@@ -415,8 +431,8 @@ class SceneReader {
     for (std::size_t i = 0; i < n.value().size(); ++i) {
       const Node o = n.element(i, "object " + std::to_string(i));
       if (!o.value().is_object()) o.fail("an object must be a JSON object, found " + type_name(o.value()));
-      const std::string type =
-          o.choice("type", {"sphere", "cylinder", "cone", "disk", "quad", "triangle", "polygon", "mesh", "instance", "spd"});
+      const std::string type = o.choice(
+          "type", {"sphere", "cylinder", "cone", "disk", "quad", "triangle", "polygon", "mesh", "instance", "spd"});
       read_object(o, type, i);
     }
   }

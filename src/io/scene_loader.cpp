@@ -14,8 +14,8 @@
 #include "raylab/io/ply_loader.h"
 #include "raylab/io/scene_json.h"
 #include "raylab/io/stl_loader.h"
-#include "raylab/scene/spd.h"
 #include "raylab/scene/builtin_scenes.h"
+#include "raylab/scene/spd.h"
 
 namespace raylab {
 
@@ -68,8 +68,7 @@ Material default_mesh_material() {
 
 void note_dropped(Scene& scene, const std::string& path, const MeshLoadReport& report) {
   if (report.degenerate_dropped > 0) {
-    scene.warnings.push_back(path + ": " + std::to_string(report.degenerate_dropped) +
-                             " zero-area triangles dropped");
+    scene.warnings.push_back(path + ": " + std::to_string(report.degenerate_dropped) + " zero-area triangles dropped");
   }
 }
 
@@ -142,8 +141,8 @@ Scene load_scene(const std::string& source, const LoadOptions& options) {
     throw UsageError("unknown scene '" + source + "' (built-in scenes: " + names +
                      "; SPD generators: spd:NAME, see --list-scenes; or a file: " + extension_list() + ")");
   }
-  throw UsageError("cannot load '" + source + "': unsupported scene format '" + ext + "' (supported: " +
-                   extension_list() + ")");
+  throw UsageError("cannot load '" + source + "': unsupported scene format '" + ext +
+                   "' (supported: " + extension_list() + ")");
 }
 
 }  // namespace raylab

@@ -105,7 +105,8 @@ void TextScanner::skip_line() {
 double TextScanner::number(std::string_view what) {
   const Token t = next(what);
   double value = 0.0;
-  if (!parse_finite(t.text, value)) fail(t, "expected " + std::string(what) + " (a finite number), found " + quoted(t.text));
+  if (!parse_finite(t.text, value))
+    fail(t, "expected " + std::string(what) + " (a finite number), found " + quoted(t.text));
   return value;
 }
 

@@ -15,7 +15,8 @@
 
 namespace raylab {
 
-SpdProtocolResult render_spd_protocol(Scene& scene, const Accelerator& accel, Film& film, const RenderOptions& options) {
+SpdProtocolResult render_spd_protocol(Scene& scene, const Accelerator& accel, Film& film,
+                                      const RenderOptions& options) {
   const int n = kSpdProtocolSize;
   if (film.width() != n || film.height() != n) throw std::invalid_argument("SPD protocol film must be 512 x 512");
   RenderSettings& settings = scene.settings;
@@ -34,23 +35,23 @@ SpdProtocolResult render_spd_protocol(Scene& scene, const Accelerator& accel, Fi
   tbb::task_arena arena(threads);
   const auto start = std::chrono::steady_clock::now();
   arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<int>(0, corners, 1), [&](const tbb::blocked_range<int>& rows) {
-        RenderStats& stats = thread_stats.local();
-        const TraceContext ctx{scene, accel, stats, options.count_traversal};
-        for (int y = rows.begin(); y != rows.end(); ++y) {
-          for (int x = 0; x < corners; ++x) {
-            // SPD scenes have point lights only; the generator is there for area lights, seeded
-            // by the corner so the image is the same for any thread count.
-            Pcg32 rng(hash_seed(settings.seed, static_cast<std::uint64_t>(y) * corners + x));
-            const Ray ray = camera.generate(static_cast<float>(x), static_cast<float>(y));
-            corner[static_cast<std::size_t>(y) * corners + x] =
-                WhittedIntegrator::trace(ctx, ray, 1, RayKind::kPrimary, rng);
-          }
-          const int done = rows_done.fetch_add(1, std::memory_order_relaxed) + 1;
-          if (options.on_progress) options.on_progress(done, corners);
+    tbb::parallel_for(tbb::blocked_range<int>(0, corners, 1), [&](const tbb::blocked_range<int>& rows) {
+      RenderStats& stats = thread_stats.local();
+      const TraceContext ctx{scene, accel, stats, options.count_traversal};
+      for (int y = rows.begin(); y != rows.end(); ++y) {
+        for (int x = 0; x < corners; ++x) {
+          // SPD scenes have point lights only; the generator is there for area lights, seeded
+          // by the corner so the image is the same for any thread count.
+          Pcg32 rng(hash_seed(settings.seed, static_cast<std::uint64_t>(y) * corners + x));
+          const Ray ray = camera.generate(static_cast<float>(x), static_cast<float>(y));
+          corner[static_cast<std::size_t>(y) * corners + x] =
+              WhittedIntegrator::trace(ctx, ray, 1, RayKind::kPrimary, rng);
         }
-      });
+        const int done = rows_done.fetch_add(1, std::memory_order_relaxed) + 1;
+        if (options.on_progress) options.on_progress(done, corners);
+      }
     });
+  });
 
   SpdProtocolResult result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -28,8 +28,8 @@ void add_polygon(Geometry& geometry, std::span<const Vec3> corners, std::span<co
   const bool has_uvs = uvs.size() == corners.size();
   auto add_corners = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     const Triangle tri{corners[a], corners[b], corners[c]};
-    const std::array<Vec3, 3> n = has_normals ? std::array<Vec3, 3>{normals[a], normals[b], normals[c]}
-                                              : std::array<Vec3, 3>{};
+    const std::array<Vec3, 3> n =
+        has_normals ? std::array<Vec3, 3>{normals[a], normals[b], normals[c]} : std::array<Vec3, 3>{};
     const std::array<Vec2, 3> t = has_uvs ? std::array<Vec2, 3>{uvs[a], uvs[b], uvs[c]} : std::array<Vec2, 3>{};
     add_triangle(geometry, tri, has_normals ? &n : nullptr, has_uvs ? &t : nullptr, object, report);
   };

@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "cli_fixture.h"
 #include "raylab/core/error.h"
 #include "raylab/io/atomic_file.h"
 #include "raylab/io/image_io.h"
-#include "cli_fixture.h"
 
 namespace raylab {
 namespace {

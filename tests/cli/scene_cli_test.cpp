@@ -15,8 +15,8 @@ using namespace cli_test;
 const std::string kScenes = std::string(RAYLAB_SOURCE_DIR) + "/scenes/";
 
 TEST_F(Cli, FlagsOverrideTheSceneFilesRenderSettings) {
-  const CliResult r = run("render '" + kScenes + "whitted.json' --width 32 --height 20 --spp 1 -q -o '" +
-                          out_file("w.pfm") + "'");
+  const CliResult r =
+      run("render '" + kScenes + "whitted.json' --width 32 --height 20 --spp 1 -q -o '" + out_file("w.pfm") + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   const Film film = read_image(out_file("w.pfm"));
   EXPECT_EQ(film.width(), 32);  // the file says 640 x 400
@@ -109,8 +109,8 @@ TEST_F(Cli, SceneFileReferencesOutsideItsFolderNeedTheFlag) {
   EXPECT_NE(refused.err.find("s.json:2:48:"), std::string::npos) << refused.err;
   EXPECT_NE(refused.err.find("--allow-outside-paths"), std::string::npos) << refused.err;
   expect_out_empty();
-  const CliResult allowed = run("render '" + scene + "' --allow-outside-paths --width 8 --height 8 -q -o '" +
-                                out_file("s.png") + "'");
+  const CliResult allowed =
+      run("render '" + scene + "' --allow-outside-paths --width 8 --height 8 -q -o '" + out_file("s.png") + "'");
   EXPECT_EQ(allowed.code, 0) << allowed.err;
 }
 

@@ -116,7 +116,8 @@ TEST(SceneJson, TransformsApplyInTheOrderWritten) {
   std::ofstream(dir / "tri.obj") << "v 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n";
   // Scale by 2, then rotate 90 degrees about z (x -> y), then translate by (10, 0, 0):
   // (1, 0, 0) -> (2, 0, 0) -> (0, 2, 0) -> (10, 2, 0).
-  const std::string text = R"({"version": 1, "materials": {"m": {}}, "lights": [{"type": "point", "position": [0, 9, 0]}],
+  const std::string text =
+      R"({"version": 1, "materials": {"m": {}}, "lights": [{"type": "point", "position": [0, 9, 0]}],
     "camera": {"from": [0, 0, 9], "at": [0, 0, 0]},
     "meshes": {"t": {"file": "tri.obj"}},
     "objects": [
@@ -157,32 +158,38 @@ struct BadScene {
 
 TEST(SceneJson, MistakesAreReportedWithLineColumnAndValidChoices) {
   const BadScene cases[] = {
-      {"{\"version\": 1, \"objcts\": []}", "s.json:1:16:", "unknown key 'objcts' in the scene (valid: $schema, version"},
+      {"{\"version\": 1, \"objcts\": []}",
+       "s.json:1:16:", "unknown key 'objcts' in the scene (valid: $schema, version"},
       {"{\"version\": 1,\n \"objects\": [\n  {\"type\": \"sphere\", \"material\": \"m\", \"centre\": [0,0,0]}]}",
        "s.json:3:39:", "unknown key 'centre' in object 0 (valid: type, name, material, center, radius)"},
       {"{\"version\": 2, \"objects\": []}", "s.json:1:2:", "version 2 is not supported"},
       {"{\"objects\": []}", "s.json:1:1:", "needs \"version\": 1"},
-      {"{\"version\": 1, \"render\": {\"width\": \"wide\"}, \"objects\": []}", "s.json:1:27:",
-       "'width' must be an integer, found a string"},
-      {"{\"version\": 1, \"render\": {\"spp\": 0}, \"objects\": []}", "s.json:1:27:", "'spp' is 0, must be in [1, 65536]"},
+      {"{\"version\": 1, \"render\": {\"width\": \"wide\"}, \"objects\": []}",
+       "s.json:1:27:", "'width' must be an integer, found a string"},
+      {"{\"version\": 1, \"render\": {\"spp\": 0}, \"objects\": []}",
+       "s.json:1:27:", "'spp' is 0, must be in [1, 65536]"},
       {"{\"version\": 1, \"render\": {\"sampler\": \"sobol\"}, \"objects\": []}", "s.json:1:27:", "(valid: jittered)"},
-      {"{\"version\": 1, \"objects\": [{\"type\": \"sphere\", \"material\": \"nope\", \"center\": [0,0,0], \"radius\": 1}]}",
+      {"{\"version\": 1, \"objects\": [{\"type\": \"sphere\", \"material\": \"nope\", \"center\": [0,0,0], \"radius\": "
+       "1}]}",
        "s.json:1:47:", "unknown material 'nope' (the scene defines no materials)"},
       {"{\"version\": 1, \"objects\": [{\"type\": \"blob\"}]}", "s.json:1:29:", "'type' is 'blob' (valid: sphere,"},
-      {"{\"version\": 1, \"materials\": {\"m\": {}}, \"objects\": [{\"type\": \"sphere\", \"material\": \"m\", \"center\": [0,0], "
+      {"{\"version\": 1, \"materials\": {\"m\": {}}, \"objects\": [{\"type\": \"sphere\", \"material\": \"m\", "
+       "\"center\": [0,0], "
        "\"radius\": 1}]}",
        "s.json:1:88:", "'center' must be an array of 3 numbers, found an array of 2"},
-      {"{\"version\": 1, \"materials\": {\"m\": {}}, \"objects\": [{\"type\": \"sphere\", \"material\": \"m\", \"center\": [0,0,0], "
+      {"{\"version\": 1, \"materials\": {\"m\": {}}, \"objects\": [{\"type\": \"sphere\", \"material\": \"m\", "
+       "\"center\": [0,0,0], "
        "\"radius\": -1}]}",
        "s.json:1:107:", "'radius' is -1, must be greater than 0"},
       {"{\"version\": 1,\n \"objects\": [}", "s.json:2:14:", "JSON"},
       {"{\"version\": 1, \"version\": 1}", "s.json:1:16:", "duplicate key 'version'"},
-      {"{\"version\": 1, \"objects\": [{\"type\": \"instance\", \"mesh\": \"bunny\"}]}", "s.json:1:49:",
-       "unknown mesh 'bunny'"},
-      {"{\"version\": 1, \"objects\": [{\"type\": \"spd\", \"generator\": \"balls\", \"transform\": {\"scale\": [1, 2, 1]}}]}",
+      {"{\"version\": 1, \"objects\": [{\"type\": \"instance\", \"mesh\": \"bunny\"}]}",
+       "s.json:1:49:", "unknown mesh 'bunny'"},
+      {"{\"version\": 1, \"objects\": [{\"type\": \"spd\", \"generator\": \"balls\", \"transform\": {\"scale\": [1, 2, "
+       "1]}}]}",
        "s.json:1:28:", "non-uniform scale"},
-      {"{\"version\": 1, \"objects\": [{\"type\": \"spd\", \"generator\": \"ballz\"}]}", "s.json:1:28:",
-       "unknown SPD scene 'ballz'"},
+      {"{\"version\": 1, \"objects\": [{\"type\": \"spd\", \"generator\": \"ballz\"}]}",
+       "s.json:1:28:", "unknown SPD scene 'ballz'"},
       {"[1, 2]", "s.json:1:1:", "must be an object"},
       {"", "s.json:1:1:", "JSON"},
       {"{\"version\": 1, \"objects\": []}", "s.json:1:16:", "no primitives"},
@@ -209,13 +216,14 @@ TEST(SceneJson, PathsLeavingTheSceneFolderAreRefusedUnlessAllowed) {
   std::ofstream(root / "scene" / "inside.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
   fs::create_symlink(root / "outside.obj", root / "scene" / "link.obj");
   auto scene_with = [](const std::string& file) {
-    return "{\"version\": 1, \"materials\": {\"m\": {}},\n \"objects\": [{\"type\": \"mesh\", \"material\": \"m\", \"file\": \"" +
+    return "{\"version\": 1, \"materials\": {\"m\": {}},\n \"objects\": [{\"type\": \"mesh\", \"material\": \"m\", "
+           "\"file\": \"" +
            file + "\"}]}";
   };
   const std::string dir = (root / "scene").string();
   EXPECT_EQ(error_of(scene_with("inside.obj"), dir), "");
-  for (const std::string& bad :
-       std::vector<std::string>{"../outside.obj", (root / "outside.obj").string(), "link.obj", "./sub/../../outside.obj"}) {
+  for (const std::string& bad : std::vector<std::string>{"../outside.obj", (root / "outside.obj").string(), "link.obj",
+                                                         "./sub/../../outside.obj"}) {
     SCOPED_TRACE(bad);
     const std::string message = error_of(scene_with(bad), dir);
     EXPECT_TRUE(message.starts_with("s.json:2:48:")) << message;

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <limits>
 
 #include "raylab/core/vec3.h"
 

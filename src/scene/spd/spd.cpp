@@ -7,7 +7,7 @@
 namespace raylab {
 
 std::span<const SpdGenerator> spd_generators() {
-  static const std::array<SpdGenerator, 7> generators{spd::balls(), spd::gears(), spd::mount(), spd::rings(),
+  static const std::array<SpdGenerator, 7> generators{spd::balls(),  spd::gears(), spd::mount(), spd::rings(),
                                                       spd::teapot(), spd::tetra(), spd::tree()};
   return generators;
 }
