@@ -106,39 +106,6 @@ int zero_index_column(const std::string& text) {
   throw InputError(path, line, 0, text.empty() ? "cannot parse OBJ file" : text);
 }
 
-// Checks every vertex coordinate, in file order. tinyobjloader reads a word it cannot parse
-// ("nan", "inf", "1.5x") as 0 without complaint, so the text of each `v` statement is checked
-// here, as well as the value it gave (1e999 overflows to infinity). `values` are its coordinates.
-void check_vertex_coordinates(const std::string& path, const std::vector<tinyobj::real_t>& values) {
-  std::ifstream in(path);
-  std::string text;
-  std::size_t vertex = 0;
-  for (int line_no = 1; std::getline(in, text); ++line_no) {
-    std::size_t p = text.find_first_not_of(" \t");
-    if (p == std::string::npos || text[p] != 'v' || p + 1 >= text.size() ||
-        (text[p + 1] != ' ' && text[p + 1] != '\t')) {
-      continue;
-    }
-    p += 1;
-    for (std::size_t k = 0; k < 3; ++k) {
-      p = text.find_first_not_of(" \t\r", p);
-      if (p == std::string::npos) break;  // a missing coordinate reads as 0, as OBJ readers do
-      const std::size_t end = std::min(text.find_first_of(" \t\r", p), text.size());
-      double value = 0.0;
-      const std::size_t digits = text[p] == '+' ? p + 1 : p;  // from_chars takes no '+'; OBJ may
-      const auto [ptr, ec] = std::from_chars(text.data() + digits, text.data() + end, value);
-      const bool parsed = ptr == text.data() + end && (ec == std::errc() || ec == std::errc::result_out_of_range);
-      const std::size_t i = 3 * vertex + k;
-      if (!parsed || (ec == std::errc() && !std::isfinite(value)) || (i < values.size() && !std::isfinite(values[i]))) {
-        throw InputError(path, line_no, static_cast<int>(p) + 1,
-                         "vertex coordinate '" + text.substr(p, end - p) + "' is not a finite number");
-      }
-      p = end;
-    }
-    ++vertex;
-  }
-}
-
 // Calls `fn(line_no, line)` for each line of `text`, 1-based, without its line end.
 template <class Fn>
 void for_each_line(const std::string& text, Fn&& fn) {
@@ -150,6 +117,39 @@ void for_each_line(const std::string& text, Fn&& fn) {
     fn(line_no, line);
     start = end + 1;
   }
+}
+
+// Checks every vertex coordinate, in file order. tinyobjloader reads a word it cannot parse
+// ("nan", "inf", "1.5x") as 0 without complaint, so the text of each `v` statement is checked
+// here, as well as the value it gave (1e999 overflows to infinity). `values` are its coordinates.
+// Works on the file's text already in memory: this pass is a large part of an OBJ load.
+void check_vertex_coordinates(const std::string& path, const std::string& file_text,
+                              const std::vector<tinyobj::real_t>& values) {
+  std::size_t vertex = 0;
+  for_each_line(file_text, [&](int line_no, std::string_view text) {
+    std::size_t p = text.find_first_not_of(" \t");
+    if (p == std::string_view::npos || text[p] != 'v' || p + 1 >= text.size() ||
+        (text[p + 1] != ' ' && text[p + 1] != '\t')) {
+      return;
+    }
+    p += 1;
+    for (std::size_t k = 0; k < 3; ++k) {
+      p = text.find_first_not_of(" \t\r", p);
+      if (p == std::string_view::npos) break;  // a missing coordinate reads as 0, as OBJ readers do
+      const std::size_t end = std::min(text.find_first_of(" \t\r", p), text.size());
+      double value = 0.0;
+      const std::size_t digits = text[p] == '+' ? p + 1 : p;  // from_chars takes no '+'; OBJ may
+      const auto [ptr, ec] = std::from_chars(text.data() + digits, text.data() + end, value);
+      const bool parsed = ptr == text.data() + end && (ec == std::errc() || ec == std::errc::result_out_of_range);
+      const std::size_t i = 3 * vertex + k;
+      if (!parsed || (ec == std::errc() && !std::isfinite(value)) || (i < values.size() && !std::isfinite(values[i]))) {
+        throw InputError(path, line_no, static_cast<int>(p) + 1,
+                         "vertex coordinate '" + std::string(text.substr(p, end - p)) + "' is not a finite number");
+      }
+      p = end;
+    }
+    ++vertex;
+  });
 }
 
 // Where the rest of `line` starts when its first word is `keyword`; npos otherwise.
@@ -452,7 +452,14 @@ class ObjMaterials {
 // Parses `text` (the OBJ file `path`) with tinyobjloader, handing it `materials` when given.
 void parse_obj(const std::string& path, const std::string& text, tinyobj::MaterialReader* materials,
                tinyobj::attrib_t& attrib, std::vector<tinyobj::shape_t>& shapes) {
-  std::istringstream stream(text);
+  // A stream over the text in place: an istringstream would copy the whole file once more.
+  struct MemoryBuffer : std::streambuf {
+    explicit MemoryBuffer(const std::string& t) {
+      char* p = const_cast<char*>(t.data());  // read only: streambuf's get area is non-const
+      setg(p, p, p + t.size());
+    }
+  } buffer(text);
+  std::istream stream(&buffer);
   std::vector<tinyobj::material_t> unused;
   std::string warn, err;
   // No triangulation there: it reads vertices through unchecked indices. No vertex colours.
@@ -518,7 +525,7 @@ MeshLoadReport load_obj(const std::string& path, Scene& scene, std::uint32_t obj
   MeshLoadReport report;
   const std::size_t vertex_count = attrib.vertices.size() / 3;
   report.vertices = vertex_count;
-  check_vertex_coordinates(path, attrib.vertices);
+  check_vertex_coordinates(path, text, attrib.vertices);
   std::vector<Vec3> normals;
   check_normals(path, attrib, normals);
   std::vector<Vec2> texcoords;
