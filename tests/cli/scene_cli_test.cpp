@@ -114,5 +114,15 @@ TEST_F(Cli, SceneFileReferencesOutsideItsFolderNeedTheFlag) {
   EXPECT_EQ(allowed.code, 0) << allowed.err;
 }
 
+TEST_F(Cli, ZeroAreaFacesAreDroppedWithACountedWarning) {
+  // Two good triangles and two degenerate ones (a repeated corner, three collinear corners).
+  write_text(work() / "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 2\nf 1 2 4\nf 3 2 1\n");
+  const CliResult r = run("info '" + (work() / "m.obj").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("m.obj: 2 zero-area triangles dropped"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("triangles 2"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace raylab
