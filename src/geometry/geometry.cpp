@@ -92,8 +92,18 @@ Box3 Geometry::bounds(std::uint32_t prim_id) const {
 }
 
 Box3 Geometry::bounds() const {
+  // Kind by kind rather than through resolve(): this runs over every primitive of a scene after
+  // loading, and a million triangles should cost a pass over their vertices, nothing more.
   Box3 b;
-  for (std::uint32_t i = 0, n = size(); i < n; ++i) b.extend(bounds(i));
+  for (const Triangle& t : triangles) {
+    b.extend(t.p0);
+    b.extend(t.p1);
+    b.extend(t.p2);
+  }
+  for (const Sphere& s : spheres) b.extend(sphere_bounds(s));
+  for (const Cylinder& c : cylinders) b.extend(cylinder_bounds(c));
+  for (const Disk& d : disks) b.extend(disk_bounds(d));
+  for (const Quad& q : quads) b.extend(quad_bounds(q));
   return b;
 }
 
