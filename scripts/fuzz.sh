@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
-# Runs every libFuzzer target in BUILD_DIR/fuzz for SECONDS each (make fuzz).
+# Runs every libFuzzer target in BUILD_DIR/bin for SECONDS each (make fuzz).
 # Seeds come from fuzz/corpus/NAME; the growing corpus and any crash input stay under BUILD_DIR.
 set -euo pipefail
 build_dir=${1:?usage: fuzz.sh BUILD_DIR SECONDS}
 seconds=${2:-60}
 root=$(cd "$(dirname "$0")/.." && pwd)
 status=0
-for target in "$build_dir"/fuzz/*_fuzz; do
+shopt -s nullglob
+targets=("$build_dir"/bin/*_fuzz)
+if [ ${#targets[@]} -eq 0 ]; then
+  echo "fuzz: no targets in $build_dir/bin (configure with the fuzz preset)"
+  exit 1
+fi
+for target in "${targets[@]}"; do
   name=$(basename "$target" _fuzz)
   work="$build_dir/corpus/$name"
   artifacts="$build_dir/artifacts/$name/"
