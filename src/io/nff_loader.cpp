@@ -44,17 +44,6 @@ constexpr Names3 kVertex{"polygon vertex x", "polygon vertex y", "polygon vertex
 constexpr Names3 kPatchVertex{"patch vertex x", "patch vertex y", "patch vertex z"};
 constexpr Names3 kPatchNormal{"patch normal x", "patch normal y", "patch normal z"};
 
-// A token quoted in a message, cut short and made printable (the file may be binary garbage).
-std::string quoted(std::string_view text) {
-  std::string out = "'";
-  for (std::size_t i = 0; i < text.size() && i < 40; ++i) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    out += (c >= 32 && c < 127) ? static_cast<char>(c) : '?';
-  }
-  if (text.size() > 40) out += "...";
-  return out + "'";
-}
-
 // One pass over the text: tokenizes and validates each entity, then hands it to the builder,
 // which owns what the entity means.
 class NffParser {

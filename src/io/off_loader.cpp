@@ -13,17 +13,6 @@
 namespace raylab {
 namespace {
 
-// A token quoted in a message: long or binary tokens are cut short and made printable.
-std::string quoted(std::string_view text) {
-  std::string out = "'";
-  for (std::size_t i = 0; i < text.size() && i < 40; ++i) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    out += (c >= 32 && c < 127) ? static_cast<char>(c) : '?';
-  }
-  if (text.size() > 40) out += "...";
-  return out + "'";
-}
-
 // The next token on the current line; fails naming `what` when the line has ended (OFF is
 // line-oriented: what follows the values a line must have is colour, and is skipped).
 Token word(TextScanner& s, std::string_view what) {

@@ -116,17 +116,6 @@ std::int64_t load_integer(Scalar t, const char* p, bool swap) {
   }
 }
 
-// A token quoted in a message: long or binary tokens are cut short and made printable.
-std::string quoted(std::string_view text) {
-  std::string out = "'";
-  for (std::size_t i = 0; i < text.size() && i < 40; ++i) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    out += (c >= 32 && c < 127) ? static_cast<char>(c) : '?';
-  }
-  if (text.size() > 40) out += "...";
-  return out + "'";
-}
-
 // ------------------------------------------------------------------------------------------------
 // Header
 

@@ -16,17 +16,6 @@ constexpr std::size_t kHeaderBytes = 80;
 constexpr std::size_t kPreambleBytes = kHeaderBytes + 4;  // header and triangle count
 constexpr std::size_t kRecordBytes = 50;                  // normal, 3 vertices, attribute word
 
-// A token quoted in a message: long or binary tokens are cut short and made printable.
-std::string quoted(std::string_view text) {
-  std::string out = "'";
-  for (std::size_t i = 0; i < text.size() && i < 40; ++i) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    out += (c >= 32 && c < 127) ? static_cast<char>(c) : '?';
-  }
-  if (text.size() > 40) out += "...";
-  return out + "'";
-}
-
 // Keywords compare without case: some exporters write "FACET NORMAL".
 bool same_keyword(std::string_view text, std::string_view keyword) {
   return std::equal(text.begin(), text.end(), keyword.begin(), keyword.end(), [](char a, char b) {

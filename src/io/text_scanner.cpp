@@ -10,7 +10,8 @@ namespace {
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
 
-// A token quoted in a message: long or binary tokens are cut short and made printable.
+}  // namespace
+
 std::string quoted(std::string_view text) {
   std::string out = "'";
   for (std::size_t i = 0; i < text.size() && i < 40; ++i) {
@@ -20,8 +21,6 @@ std::string quoted(std::string_view text) {
   if (text.size() > 40) out += "...";
   return out + "'";
 }
-
-}  // namespace
 
 bool parse_finite(std::string_view text, double& value) {
   if (!text.empty() && text.front() == '+') {

@@ -65,6 +65,10 @@ class TextScanner {
   std::size_t m_line_start = 0;
 };
 
+/// A token quoted for a message: cut to 40 characters, non-printable bytes shown as '?' (binary
+/// garbage must not reach the terminal raw).
+std::string quoted(std::string_view text);
+
 /// Parses `text` as a finite number (accepting a leading '+'); false if it is not one.
 bool parse_finite(std::string_view text, double& value);
 
