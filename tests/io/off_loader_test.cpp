@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "parse_error_util.h"
 #include "raylab/core/error.h"
 #include "raylab/core/rng.h"
 #include "raylab/io/off_loader.h"
@@ -34,29 +35,14 @@ void expect_triangle(const Triangle& t, Vec3 p0, Vec3 p1, Vec3 p2) {
   expect_vec(t.p2, p2);
 }
 
-std::string error_of(const std::string& text) {
-  Geometry g;
-  try {
-    parse_off(text, "mesh.off", g, 0);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string error_of(const std::string& text) { return test::parse_error(parse_off, text, "mesh.off"); }
 
 void expect_error(const std::string& text, const std::string& prefix, const std::string& words) {
-  const std::string message = error_of(text);
-  EXPECT_EQ(message.rfind(prefix, 0), 0u) << "message: " << message << "\nexpected prefix: " << prefix;
-  EXPECT_NE(message.find(words), std::string::npos) << "message: " << message << "\nexpected words: " << words;
+  test::expect_message(error_of(text), prefix, words);
 }
 
 // The position just past the end of `text`, where a truncated file's error is reported.
-std::string end_prefix(const std::string& text) {
-  const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-  const std::size_t last = text.rfind('\n');
-  const std::size_t col = text.size() - (last == std::string::npos ? 0 : last + 1) + 1;
-  return "mesh.off:" + std::to_string(line) + ":" + std::to_string(col) + ": ";
-}
+std::string end_prefix(const std::string& text) { return test::end_position("mesh.off", text); }
 
 // A triangle of vertices (0 0 0) (1 0 0) (0 1 0) (lines 3-5) and face (line 6).
 const std::string kTriangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";

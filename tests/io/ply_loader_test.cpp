@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "parse_error_util.h"
 #include "raylab/core/error.h"
 #include "raylab/core/rng.h"
 #include "raylab/io/ply_loader.h"
@@ -216,32 +217,17 @@ void expect_sample(const Geometry& g, bool normals, bool uvs) {
 }
 
 // The message of the InputError that parsing `bytes` must throw ("no error" if none).
-std::string error_of(const std::string& bytes) {
-  Geometry g;
-  try {
-    parse_ply(bytes, "mesh.ply", g, 0);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string error_of(const std::string& bytes) { return test::parse_error(parse_ply, bytes, "mesh.ply"); }
 
 // Expects parsing `bytes` to fail with a message that starts with `prefix` and contains `words`.
 void expect_error(const std::string& bytes, const std::string& prefix, const std::string& words) {
-  const std::string message = error_of(bytes);
-  EXPECT_EQ(message.rfind(prefix, 0), 0u) << "message: " << message << "\nexpected prefix: " << prefix;
-  EXPECT_NE(message.find(words), std::string::npos) << "message: " << message << "\nexpected words: " << words;
+  test::expect_message(error_of(bytes), prefix, words);
 }
 
 std::string byte_prefix(std::size_t offset) { return "mesh.ply: byte " + std::to_string(offset) + ": "; }
 
 // The position just past the end of `text`: where a scanner reports "unexpected end of file".
-std::string end_prefix(const std::string& text) {
-  const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-  const std::size_t last = text.rfind('\n');
-  const std::size_t col = text.size() - (last == std::string::npos ? 0 : last + 1) + 1;
-  return "mesh.ply:" + std::to_string(line) + ":" + std::to_string(col) + ": ";
-}
+std::string end_prefix(const std::string& text) { return test::end_position("mesh.ply", text); }
 
 // A small ASCII file: the unit square as two triangles (lines 10-13 vertices, 14-15 faces).
 std::string ascii_square(const std::string& vertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n",

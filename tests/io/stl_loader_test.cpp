@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "parse_error_util.h"
 #include "raylab/core/error.h"
 #include "raylab/core/rng.h"
 #include "raylab/io/stl_loader.h"
@@ -93,28 +94,13 @@ void expect_square(const Geometry& g) {
   EXPECT_TRUE(g.triangle_uvs.empty());
 }
 
-std::string error_of(const std::string& bytes) {
-  Geometry g;
-  try {
-    parse_stl(bytes, "mesh.stl", g, 0);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string error_of(const std::string& bytes) { return test::parse_error(parse_stl, bytes, "mesh.stl"); }
 
 void expect_error(const std::string& bytes, const std::string& prefix, const std::string& words) {
-  const std::string message = error_of(bytes);
-  EXPECT_EQ(message.rfind(prefix, 0), 0u) << "message: " << message << "\nexpected prefix: " << prefix;
-  EXPECT_NE(message.find(words), std::string::npos) << "message: " << message << "\nexpected words: " << words;
+  test::expect_message(error_of(bytes), prefix, words);
 }
 
-std::string end_prefix(const std::string& text) {
-  const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-  const std::size_t last = text.rfind('\n');
-  const std::size_t col = text.size() - (last == std::string::npos ? 0 : last + 1) + 1;
-  return "mesh.stl:" + std::to_string(line) + ":" + std::to_string(col) + ": ";
-}
+std::string end_prefix(const std::string& text) { return test::end_position("mesh.stl", text); }
 
 TEST(StlLoader, AsciiFacets) {
   Geometry g;

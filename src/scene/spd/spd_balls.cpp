@@ -12,14 +12,14 @@
 
 #include <array>
 
-#include "spd_a_lib.h"
 #include "spd_generators.h"
+#include "spd_lib.h"
 
 namespace raylab::spd {
 namespace {
 
-using a::DVec;
-using a::Rotation;
+using lib::DVec;
+using lib::Rotation;
 
 constexpr double kChildRadiusRatio = 1.0 / 3.0;
 
@@ -30,11 +30,11 @@ constexpr double kChildRadiusRatio = 1.0 / 3.0;
 std::array<DVec, 9> child_directions() {
   const double d = 1.0 / std::sqrt(2.0);
   std::array<DVec, 3> trio{DVec{d, d, 0.0}, DVec{d, 0.0, -d}, DVec{0.0, d, -d}};
-  const Rotation tilt(a::normalized(DVec{1.0, -1.0, 0.0}), std::asin(2.0 / std::sqrt(6.0)));
+  const Rotation tilt(lib::normalized(DVec{1.0, -1.0, 0.0}), std::asin(2.0 / std::sqrt(6.0)));
   for (DVec& v : trio) v = tilt(v);
   std::array<DVec, 9> directions;
   for (int copy = 0; copy < 3; ++copy) {
-    const Rotation turn = Rotation::about_z(copy * 2.0 * a::kPi / 3.0);
+    const Rotation turn = Rotation::about_z(copy * 2.0 * lib::kPi / 3.0);
     for (int i = 0; i < 3; ++i) directions[copy * 3 + i] = turn(trio[i]);
   }
   return directions;
@@ -44,14 +44,14 @@ std::array<DVec, 9> child_directions() {
 // those axes exactly, as in SPD (the cross product would be too short to normalize reliably).
 Rotation rotation_to(DVec up) {
   if (up.z >= 0.9999) return Rotation();
-  if (up.z <= -0.9999) return Rotation(DVec{0.0, 1.0, 0.0}, a::kPi);
-  return Rotation(a::normalized(a::cross(DVec{0.0, 0.0, 1.0}, up)), std::acos(up.z));
+  if (up.z <= -0.9999) return Rotation(DVec{0.0, 1.0, 0.0}, lib::kPi);
+  return Rotation(lib::normalized(lib::cross(DVec{0.0, 0.0, 1.0}, up)), std::acos(up.z));
 }
 
 // Emits the sphere at `center` and then, `depth` levels down, its descendants.
 void bloom(int depth, DVec center, double radius, DVec up, const std::array<DVec, 9>& directions,
            NffSceneBuilder& out) {
-  out.sphere(a::to_float(center), static_cast<float>(radius));
+  out.sphere(lib::to_float(center), static_cast<float>(radius));
   if (depth == 0) return;
   const Rotation orient = rotation_to(up);
   const double reach = radius * (1.0 + kChildRadiusRatio);  // parent and child touch
@@ -62,21 +62,21 @@ void bloom(int depth, DVec center, double radius, DVec up, const std::array<DVec
 }
 
 void generate(int size, NffSceneBuilder& out) {
-  out.background(a::kSkyBlue);
-  out.view(a::view({2.1, 1.3, 1.7}, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 0.01));
+  out.background(lib::kSkyBlue);
+  out.view(lib::view({2.1, 1.3, 1.7}, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 0.01));
   out.light({4.f, 3.f, 2.f});
   out.light({1.f, -4.f, 4.f});
   out.light({-3.f, 1.f, 5.f});
 
   // The flake fits in a sphere of radius 1 about the origin; the floor lies half that below.
   const double radius = 1.0;
-  out.fill(a::surface({1.f, 0.75f, 0.33f}, 0.8, 0.0, 0.0, 0.0, 1.0));
+  out.fill(lib::surface({1.f, 0.75f, 0.33f}, 0.8, 0.0, 0.0, 0.0, 1.0));
   const float half = static_cast<float>(12.0 * radius), floor_z = static_cast<float>(-radius / 2.0);
   const std::array<Vec3, 4> floor{Vec3{half, half, floor_z}, Vec3{-half, half, floor_z}, Vec3{-half, -half, floor_z},
                                   Vec3{half, -half, floor_z}};
   out.polygon(floor);
 
-  out.fill(a::surface({1.f, 0.9f, 0.7f}, 0.5, 0.5, 37.0, 0.0, 1.0));
+  out.fill(lib::surface({1.f, 0.9f, 0.7f}, 0.5, 0.5, 37.0, 0.0, 1.0));
   bloom(size, {0.0, 0.0, 0.0}, radius / 2.0, {0.0, 0.0, 1.0}, child_directions(), out);
 }
 

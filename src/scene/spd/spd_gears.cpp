@@ -14,13 +14,13 @@
 #include <array>
 #include <cmath>
 
-#include "spd_a_lib.h"
 #include "spd_generators.h"
+#include "spd_lib.h"
 
 namespace raylab::spd {
 namespace {
 
-using a::DVec;
+using lib::DVec;
 
 constexpr int kTeeth = 36;                // must be a multiple of 4
 constexpr int kFaceCorners = 4 * kTeeth;  // corners of a gear face
@@ -40,7 +40,7 @@ Face gear_face(DVec center, double offset_angle, double tooth_angle, double tip,
   const std::array<double, 4> fraction{-0.19, 0.19, 0.3, 0.7};
   for (int tooth = 0; tooth < kTeeth; ++tooth) {
     const double angle =
-        offset_angle + (tooth_angle > 0.0 ? 1.0 : -1.0) * 2.0 * a::kPi * static_cast<double>(tooth) / kTeeth;
+        offset_angle + (tooth_angle > 0.0 ? 1.0 : -1.0) * 2.0 * lib::kPi * static_cast<double>(tooth) / kTeeth;
     for (int i = 0; i < 4; ++i) {
       const double radius = i < 2 ? tip : root;
       const double turn = angle + fraction[i] * tooth_angle;
@@ -52,23 +52,23 @@ Face gear_face(DVec center, double offset_angle, double tooth_angle, double tip,
 
 // Emits one gear: top face, the side walls (down from each top edge), bottom face.
 void gear(DVec center, double offset_angle, double tip, double root, double thickness, NffSceneBuilder& out) {
-  const double tooth_angle = 2.0 * a::kPi / kTeeth;
+  const double tooth_angle = 2.0 * lib::kPi / kTeeth;
   const Face top = gear_face(center, offset_angle, tooth_angle, tip, root, 0.0);
   std::array<Vec3, kFaceCorners> polygon;
-  for (int i = 0; i < kFaceCorners; ++i) polygon[i] = a::to_float(top[i]);
+  for (int i = 0; i < kFaceCorners; ++i) polygon[i] = lib::to_float(top[i]);
   out.polygon(polygon);
 
   const DVec down{0.0, 0.0, thickness};
   for (int i = 0; i < kFaceCorners; ++i) {
     const DVec& here = top[i];
     const DVec& next = top[(i + 1) % kFaceCorners];
-    const std::array<Vec3, 4> wall{a::to_float(here), a::to_float(here - down), a::to_float(next - down),
-                                   a::to_float(next)};
+    const std::array<Vec3, 4> wall{lib::to_float(here), lib::to_float(here - down), lib::to_float(next - down),
+                                   lib::to_float(next)};
     out.polygon(wall);
   }
 
   const Face bottom = gear_face(center, offset_angle, -tooth_angle, tip, root, -thickness);
-  for (int i = 0; i < kFaceCorners; ++i) polygon[i] = a::to_float(bottom[i]);
+  for (int i = 0; i < kFaceCorners; ++i) polygon[i] = lib::to_float(bottom[i]);
   out.polygon(polygon);
 }
 
@@ -84,15 +84,15 @@ Color gear_color(int ix, int iy, int iz) {
 }
 
 void generate(int size, NffSceneBuilder& out) {
-  out.background(a::kSkyBlue);
-  out.view(a::view({-1.1, -2.1, 2.6}, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 1.0));
+  out.background(lib::kSkyBlue);
+  out.view(lib::view({-1.1, -2.1, 2.6}, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 1.0));
   out.light({2.f, 4.f, 4.f});
   out.light({-2.f, 4.f, 3.f});
   out.light({2.f, -2.5f, 2.5f});
   out.light({-1.f, -4.f, 2.f});
   out.light({-1.111f, -2.121f, 2.626f});  // just behind the eye
 
-  out.fill(a::surface({1.f, 0.85f, 0.7f}, 0.3, 0.6, 37.0, 0.0, 0.0));
+  out.fill(lib::surface({1.f, 0.85f, 0.7f}, 0.3, 0.6, 37.0, 0.0, 0.0));
   const std::array<Vec3, 4> ground{Vec3{2.f, 2.f, 0.f}, Vec3{-2.f, 2.f, 0.f}, Vec3{-2.f, -2.f, 0.f},
                                    Vec3{2.f, -2.f, 0.f}};
   out.polygon(ground);
@@ -110,12 +110,12 @@ void generate(int size, NffSceneBuilder& out) {
         const DVec center{first + ix * spacing, first + iy * spacing, 1.0 + iz * (-1.0 / n)};
         const Color color = gear_color(ix, iy, iz);
         if ((ix * 4 + iy * 2 + iz) % 5 == 0) {
-          out.fill(a::surface(color, 0.2, 0.0, 0.0, 0.8, 1.1));  // glassy
+          out.fill(lib::surface(color, 0.2, 0.0, 0.0, 0.8, 1.1));  // glassy
         } else {
-          out.fill(a::surface(color, 1.0, 0.0, 0.0, 0.0, 0.0));
+          out.fill(lib::surface(color, 1.0, 0.0, 0.0, 0.0, 0.0));
         }
         // Neighbours alternate by half a tooth so that their teeth mesh.
-        const double offset_angle = a::kPi * static_cast<double>((ix + iy + iz) % 2) / kTeeth;
+        const double offset_angle = lib::kPi * static_cast<double>((ix + iy + iz) % 2) / kTeeth;
         gear(center, offset_angle, kTipRatio * radius, kRootRatio * radius, thickness, out);
       }
     }

@@ -19,14 +19,14 @@
 #include <cmath>
 #include <cstdint>
 
-#include "spd_a_lib.h"
 #include "spd_generators.h"
+#include "spd_lib.h"
 
 namespace raylab::spd {
 namespace {
 
-using a::DVec;
-using a::Rotation;
+using lib::DVec;
+using lib::Rotation;
 
 constexpr double kFractalDimension = 2.2;  // between 2 (smooth) and 3 (space-filling)
 constexpr long kMountainNumber = 21;       // added to every seed; another number, another mountain
@@ -101,10 +101,10 @@ class Mountain {
 
   // One grid cell as two triangles, split along its lower-left to upper-right diagonal.
   void emit_cell(int x, int y, const Corners& z) {
-    const Vec3 ll = a::to_float({grid(x), grid(y), z.ll});
-    const Vec3 lr = a::to_float({grid(x + 1), grid(y), z.lr});
-    const Vec3 ur = a::to_float({grid(x + 1), grid(y + 1), z.ur});
-    const Vec3 ul = a::to_float({grid(x), grid(y + 1), z.ul});
+    const Vec3 ll = lib::to_float({grid(x), grid(y), z.ll});
+    const Vec3 lr = lib::to_float({grid(x + 1), grid(y), z.lr});
+    const Vec3 ur = lib::to_float({grid(x + 1), grid(y + 1), z.ur});
+    const Vec3 ul = lib::to_float({grid(x), grid(y + 1), z.ul});
     m_out.polygon(std::array<Vec3, 3>{ll, lr, ur});
     m_out.polygon(std::array<Vec3, 3>{ur, ul, ll});
   }
@@ -120,22 +120,22 @@ class Mountain {
 // its corners are acos(-1/3) apart as seen from the centre.
 void sphere_pyramid(DVec centre, double radius, NffSceneBuilder& out) {
   const DVec apex{0.0, 0.0, radius * std::sqrt(3.0 / 2.0)};
-  out.sphere(a::to_float(centre + apex), static_cast<float>(radius));
-  const DVec foot = Rotation(a::normalized(DVec{1.0, 1.0, 0.0}), std::acos(-1.0 / 3.0))(apex);
+  out.sphere(lib::to_float(centre + apex), static_cast<float>(radius));
+  const DVec foot = Rotation(lib::normalized(DVec{1.0, 1.0, 0.0}), std::acos(-1.0 / 3.0))(apex);
   for (int i = 0; i < 3; ++i) {
-    out.sphere(a::to_float(Rotation::about_z(i * 2.0 * a::kPi / 3.0)(foot) + centre), static_cast<float>(radius));
+    out.sphere(lib::to_float(Rotation::about_z(i * 2.0 * lib::kPi / 3.0)(foot) + centre), static_cast<float>(radius));
   }
 }
 
 void generate(int size, NffSceneBuilder& out) {
-  out.background(a::kSkyBlue);
-  out.view(a::view({-1.6, 1.6, 1.7}, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 0.01));
+  out.background(lib::kSkyBlue);
+  out.view(lib::view({-1.6, 1.6, 1.7}, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 0.01));
   out.light({-100.f, -100.f, 100.f});
 
-  out.fill(a::surface({1.f, 1.f, 1.f}, 0.1, 0.1, 6.7, 0.9, 1.5));  // clear glass
+  out.fill(lib::surface({1.f, 1.f, 1.f}, 0.1, 0.1, 6.7, 0.9, 1.5));  // clear glass
   sphere_pyramid({-0.8, 0.8, 1.0}, 0.17, out);
 
-  out.fill(a::surface({0.5f, 0.45f, 0.35f}, 1.0, 0.0, 0.0, 0.0, 0.0));
+  out.fill(lib::surface({0.5f, 0.45f, 0.35f}, 1.0, 0.0, 0.0, 0.0, 0.0));
   Mountain mountain(size, out);
   mountain.grow(1 << size, 0, 0, {0.0, 0.0, 0.0, 0.0});
 }

@@ -13,6 +13,7 @@
 #include <numbers>
 
 #include "spd_generators.h"
+#include "spd_lib.h"
 
 namespace raylab::spd {
 namespace {
@@ -30,13 +31,6 @@ Vec3 to_vec3(P3 p) { return {static_cast<float>(p.x), static_cast<float>(p.y), s
 
 /// Radius of the cylinders and of the spheres that round off their joints.
 constexpr double kRadius = 0.07412;
-
-/// The SPD library's Phong exponent for a highlight that falls to half strength `degrees` away.
-float phong_exponent(double degrees) {
-  if (degrees <= 0.0) return 100000.f;
-  if (degrees >= 90.0) return 1.f;
-  return static_cast<float>(std::log(0.5) / std::log(std::cos(degrees * kPi / 180.0)));
-}
 
 /// Rotation of p about the x axis (then z axis) by `angle` radians, counter-clockwise as seen from
 /// the positive axis.
@@ -76,7 +70,7 @@ void emit_object(const std::array<P3, 30>& joints, P3 offset, NffSceneBuilder& o
                                                     Color{0.f, 1.f, 1.f}, Color{1.f, 0.f, 1.f}, Color{1.f, 1.f, 0.f}};
   const auto r = static_cast<float>(kRadius);
   for (int ring = 0; ring < 6; ++ring) {
-    out.fill({kRingColors[ring], 0.5f, 0.2f, phong_exponent(37.0), 0.f, 0.f});
+    out.fill(lib::surface(kRingColors[ring], 0.5, 0.2, 37.0, 0.0, 0.0));
     for (int v = 0; v < 5; ++v) {
       const Vec3 joint = to_vec3(joints[5 * ring + v] + offset);
       const Vec3 previous = to_vec3(joints[5 * ring + (v + 4) % 5] + offset);
@@ -93,21 +87,15 @@ void generate(int size, NffSceneBuilder& out) {
   const double y_step = spread;
   const double xz_step = 1.0;
 
-  out.background({0.078f, 0.361f, 0.753f});
+  out.background(lib::kSkyBlue);
   const P3 from{-1.0, -spread, 0.5};
-  NffView view;
-  view.from = to_vec3(from);
-  view.at = to_vec3({from.x, from.y + 1.0, from.z});
-  view.up = {0.f, 0.f, 1.f};
-  view.angle = 45.0;
-  view.hither = 1.0;
-  out.view(view);
+  out.view(lib::view({from.x, from.y, from.z}, {from.x, from.y + 1.0, from.z}, {0.0, 0.0, 1.0}, 1.0));
   out.light(to_vec3({3.0, -spread, 3.0}));
   out.light(to_vec3({-4.0, -spread, 1.0}));
   out.light(to_vec3({2.0, -spread, -4.0}));
 
   // The wall stands one level behind the last, 1% wider than the view there.
-  out.fill({{1.f, 1.f, 1.f}, 1.f, 0.f, phong_exponent(0.0), 0.f, 0.f});
+  out.fill(lib::surface({1.f, 1.f, 1.f}, 1.0, 0.0, 0.0, 0.0, 0.0));
   const double wall_y = y_step * (size + 1);
   const double half = 1.01 * (wall_y - from.y) * std::tan(kPi / 8.0);
   const std::array<Vec3, 4> wall{

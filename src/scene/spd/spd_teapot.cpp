@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "spd_generators.h"
+#include "spd_lib.h"
 
 namespace raylab::spd {
 namespace {
@@ -39,13 +40,6 @@ P3 normalized(P3 a) {
 }
 
 Vec3 to_vec3(P3 p) { return {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)}; }
-
-/// The SPD library's Phong exponent for a highlight that falls to half strength `degrees` away.
-float phong_exponent(double degrees) {
-  if (degrees <= 0.0) return 100000.f;
-  if (degrees >= 90.0) return 1.f;
-  return static_cast<float>(std::log(0.5) / std::log(std::cos(degrees * kPi / 180.0)));
-}
 
 // The teapot's control points, as the SPD program numbers them (data, public since Newell 1975).
 // clang-format off
@@ -244,7 +238,7 @@ void emit_checkerboard(int n, NffSceneBuilder& out) {
   auto coordinate = [n](int k) { return static_cast<float>(4.0 * (2.0 * k / n - 1.0)); };
   for (const int parity : {1, 0}) {
     const float grey = parity == 1 ? 1.f : 0.5f;
-    out.fill({{grey, grey, grey}, 0.5f, 0.5f, phong_exponent(30.0), 0.f, 0.f});
+    out.fill(lib::surface({grey, grey, grey}, 0.5, 0.5, 30.0, 0.0, 0.0));
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j < n; ++j) {
         if ((i + j) % 2 != parity) continue;
@@ -258,19 +252,13 @@ void emit_checkerboard(int n, NffSceneBuilder& out) {
 }
 
 void generate(int size, NffSceneBuilder& out) {
-  out.background({0.078f, 0.361f, 0.753f});
-  NffView view;
-  view.from = {4.86f, 7.2f, 5.4f};
-  view.at = {0.f, 0.f, 0.f};
-  view.up = {0.f, 0.f, 1.f};
-  view.angle = 45.0;
-  view.hither = 1.0;
-  out.view(view);
+  out.background(lib::kSkyBlue);
+  out.view(lib::view({4.86, 7.2, 5.4}, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 1.0));
   out.light({-3.1f, 9.8f, 12.1f});
   out.light({11.3f, 5.1f, 8.8f});
 
   emit_checkerboard(size, out);
-  out.fill({{1.f, 0.5f, 0.1f}, 0.75f, 0.25f, phong_exponent(37.0), 0.f, 0.f});
+  out.fill(lib::surface({1.f, 0.5f, 0.1f}, 0.75, 0.25, 37.0, 0.0, 0.0));
   for (int patch = 0; patch < 32; ++patch) emit_patch(patch, size, out);
 }
 

@@ -10,13 +10,13 @@
 
 #include <array>
 
-#include "spd_a_lib.h"
 #include "spd_generators.h"
+#include "spd_lib.h"
 
 namespace raylab::spd {
 namespace {
 
-using a::DVec;
+using lib::DVec;
 
 // The cube corners (x, y, z in {-1, 1}) with x*y*z = 1, i.e. one of the cube's two inscribed
 // tetrahedra, in SPD's order (x slowest, z fastest).
@@ -34,9 +34,9 @@ DVec corner(DVec center, double half, int i) {
 void pyramid(int level, DVec center, double half, NffSceneBuilder& out) {
   if (level <= 1) {
     for (const auto& face : kFaces) {
-      const std::array<Vec3, 3> triangle{a::to_float(corner(center, half, face[0])),
-                                         a::to_float(corner(center, half, face[1])),
-                                         a::to_float(corner(center, half, face[2]))};
+      const std::array<Vec3, 3> triangle{lib::to_float(corner(center, half, face[0])),
+                                         lib::to_float(corner(center, half, face[1])),
+                                         lib::to_float(corner(center, half, face[2]))};
       out.polygon(triangle);
     }
     return;
@@ -45,11 +45,11 @@ void pyramid(int level, DVec center, double half, NffSceneBuilder& out) {
 }
 
 void generate(int size, NffSceneBuilder& out) {
-  out.background(a::kSkyBlue);
-  out.view(a::view({1.022846, -3.177154, -2.174512}, {-0.004103, -0.004103, 0.216539}, {-0.816497, -0.816497, 0.816497},
-                   1.0));
+  out.background(lib::kSkyBlue);
+  out.view(lib::view({1.022846, -3.177154, -2.174512}, {-0.004103, -0.004103, 0.216539},
+                     {-0.816497, -0.816497, 0.816497}, 1.0));
   out.light({2.f, -18.f, -5.f});
-  out.fill(a::surface({1.f, 0.2f, 0.2f}, 1.0, 0.0, 0.0, 0.0, 0.0));
+  out.fill(lib::surface({1.f, 0.2f, 0.2f}, 1.0, 0.0, 0.0, 0.0, 0.0));
   pyramid(size, {0.0, 0.0, 0.0}, 1.0, out);
 }
 

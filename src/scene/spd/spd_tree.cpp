@@ -13,6 +13,7 @@
 #include <numbers>
 
 #include "spd_generators.h"
+#include "spd_lib.h"
 
 namespace raylab::spd {
 namespace {
@@ -81,25 +82,19 @@ void grow(const std::array<Affine, 2>& children, const Affine& frame, double sca
 }
 
 void generate(int size, NffSceneBuilder& out) {
-  out.background({0.078f, 0.361f, 0.753f});
-  NffView view;
-  view.from = {4.5f, 0.4f, 2.f};
-  view.at = {0.f, 0.f, 1.5f};
-  view.up = {0.f, 0.f, 1.f};
-  view.angle = 45.0;
-  view.hither = 1.0;
-  out.view(view);
+  out.background(lib::kSkyBlue);
+  out.view(lib::view({4.5, 0.4, 2.0}, {0.0, 0.0, 1.5}, {0.0, 0.0, 1.0}, 1.0));
   for (const Vec3 l : {Vec3{-5, 5, 50}, Vec3{30, -30, 30}, Vec3{-40, -30, 20}, Vec3{10, 30, 40}, Vec3{-30, 40, 10},
                        Vec3{50, 25, 20}, Vec3{-10, -60, 30}}) {
     out.light(l);
   }
 
   // Matte surfaces: the original asks for no highlight, which its library writes as exponent 1e5.
-  out.fill({{0.2f, 0.7f, 0.2f}, 1.f, 0.f, 100000.f, 0.f, 0.f});
+  out.fill(lib::surface({0.2f, 0.7f, 0.2f}, 1.0, 0.0, 0.0, 0.0, 0.0));
   const std::array<Vec3, 4> field{Vec3{50, 50, 0}, Vec3{-50, 50, 0}, Vec3{-50, -50, 0}, Vec3{50, -50, 0}};
   out.polygon(field);
 
-  out.fill({{0.55f, 0.4f, 0.2f}, 1.f, 0.f, 100000.f, 0.f, 0.f});
+  out.fill(lib::surface({0.55f, 0.4f, 0.2f}, 1.0, 0.0, 0.0, 0.0, 0.0));
   grow({branching(0), branching(1)}, Affine{}, 1.0, size, out);
 }
 

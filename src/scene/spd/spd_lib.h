@@ -1,5 +1,5 @@
 #pragma once
-// Internal, header-only: what the SPD generators balls, gears, mount and tetra need of the SPD
+// Internal, header-only: what the seven SPD generators need of the SPD support library
 // support library (Haines' lib*.c): double-precision vectors and rotations, the camera, the
 // background, and the mapping from SPD's surface description to an NFF fill. The SPD programs
 // compute in double and round only when printing, so these helpers do the same and round to
@@ -10,7 +10,7 @@
 
 #include "raylab/scene/nff_builder.h"
 
-namespace raylab::spd::a {
+namespace raylab::spd::lib {
 
 inline constexpr double kPi = std::numbers::pi;
 
@@ -103,4 +103,4 @@ inline NffView view(DVec from, DVec at, DVec up, double hither) {
   return v;
 }
 
-}  // namespace raylab::spd::a
+}  // namespace raylab::spd::lib
