@@ -14,7 +14,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <numbers>
 #include <vector>
 
 #include "spd_generators.h"
@@ -22,8 +21,6 @@
 
 namespace raylab::spd {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 struct P3 {
   double x = 0.0, y = 0.0, z = 0.0;
