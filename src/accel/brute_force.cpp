@@ -1,12 +1,18 @@
 #include "raylab/accel/brute_force.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace raylab {
 
-BruteForce::BruteForce(const Geometry& geometry) : m_geometry(geometry) {
+BruteForce::BruteForce(const Geometry& geometry) : BruteForce(geometry, geometry.primitive_ids()) {}
+
+BruteForce::BruteForce(const Geometry& geometry, std::span<const std::uint32_t> ids)
+    : m_geometry(geometry), m_ids(ids.begin(), ids.end()) {
   const auto start = std::chrono::steady_clock::now();
-  m_bounds = geometry.bounds();
+  // Ascending ids, so that an any-hit query finds the same first hit whatever order was given.
+  std::sort(m_ids.begin(), m_ids.end());
+  for (std::uint32_t id : m_ids) m_bounds.extend(geometry.bounds(id));
   m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -14,8 +20,8 @@ template <bool kCount>
 bool BruteForce::intersect_impl(Ray& ray, Hit& hit, TraversalStats* stats) const {
   const WatertightRay wr(ray);
   bool found = false;
-  const std::uint32_t n = m_geometry.size();
-  for (std::uint32_t i = 0; i < n; ++i) found |= m_geometry.intersect(i, wr, ray, hit);
+  const auto n = static_cast<std::uint32_t>(m_ids.size());
+  for (std::uint32_t id : m_ids) found |= m_geometry.intersect(id, wr, ray, hit);
   if constexpr (kCount) {
     stats->prim_tests += n;
     stats->hits += found ? 1 : 0;
@@ -26,11 +32,9 @@ bool BruteForce::intersect_impl(Ray& ray, Hit& hit, TraversalStats* stats) const
 template <bool kCount>
 bool BruteForce::occluded_impl(const Ray& ray, TraversalStats* stats) const {
   const WatertightRay wr(ray);
-  Ray probe = ray;
-  Hit scratch;
-  const std::uint32_t n = m_geometry.size();
+  const auto n = static_cast<std::uint32_t>(m_ids.size());
   for (std::uint32_t i = 0; i < n; ++i) {
-    if (m_geometry.intersect(i, wr, probe, scratch)) {
+    if (m_geometry.occluded(m_ids[i], wr, ray)) {
       if constexpr (kCount) {
         stats->prim_tests += i + 1;
         ++stats->hits;
@@ -55,8 +59,8 @@ AccelInfo BruteForce::info() const {
   AccelInfo info;
   info.name = "brute";
   info.build_seconds = m_build_seconds;
-  info.memory_bytes = sizeof(*this);
-  info.primitive_count = m_geometry.size();
+  info.memory_bytes = sizeof(*this) + m_ids.capacity() * sizeof(std::uint32_t);
+  info.primitive_count = m_ids.size();
   return info;
 }
 

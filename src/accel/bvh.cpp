@@ -61,9 +61,12 @@ constexpr int kStackSize = 128;  // the builder bounds depth well below this (se
 
 }  // namespace
 
-Bvh::Bvh(const Geometry& geometry, const BvhConfig& config) : m_geometry(geometry) {
+Bvh::Bvh(const Geometry& geometry, const BvhConfig& config) : Bvh(geometry, geometry.primitive_ids(), config) {}
+
+Bvh::Bvh(const Geometry& geometry, std::span<const std::uint32_t> ids, const BvhConfig& config)
+    : m_geometry(geometry) {
   const auto start = std::chrono::steady_clock::now();
-  m_tree = build_bvh(geometry, config);
+  m_tree = build_bvh(geometry, ids, config);
   m_triangle_count = static_cast<std::uint32_t>(geometry.triangles.size());
   m_leaf_triangles = triangles_in_leaf_order(geometry, m_tree.prim_ids);
   m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -29,9 +29,12 @@ int depth_of(const std::vector<Bvh4Node>& nodes, std::uint32_t index) {
 
 }  // namespace
 
-Bvh4::Bvh4(const Geometry& geometry, const BvhConfig& config) : m_geometry(geometry) {
+Bvh4::Bvh4(const Geometry& geometry, const BvhConfig& config) : Bvh4(geometry, geometry.primitive_ids(), config) {}
+
+Bvh4::Bvh4(const Geometry& geometry, std::span<const std::uint32_t> ids, const BvhConfig& config)
+    : m_geometry(geometry) {
   const auto start = std::chrono::steady_clock::now();
-  BvhTree tree = build_bvh(geometry, config);
+  BvhTree tree = build_bvh(geometry, ids, config);
   m_nodes = collapse_to_bvh4(tree);
   m_prim_ids = std::move(tree.prim_ids);
   m_leaf_triangles = triangles_in_leaf_order(geometry, m_prim_ids);

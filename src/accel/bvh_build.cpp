@@ -210,8 +210,12 @@ void relayout_depth_first(BvhTree& tree) {
 }  // namespace
 
 BvhTree build_bvh(const Geometry& geometry, const BvhConfig& config) {
+  return build_bvh(geometry, geometry.primitive_ids(), config);
+}
+
+BvhTree build_bvh(const Geometry& geometry, std::span<const std::uint32_t> ids, const BvhConfig& config) {
   BvhTree tree;
-  const std::uint32_t n = geometry.size();
+  const auto n = static_cast<std::uint32_t>(ids.size());
   if (n == 0) {
     BvhNode empty{};
     for (int a = 0; a < 3; ++a) {
@@ -226,12 +230,14 @@ BvhTree build_bvh(const Geometry& geometry, const BvhConfig& config) {
   std::vector<PrimInfo> prims(n);
   tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 1024), [&](const auto& range) {
     for (std::uint32_t i = range.begin(); i != range.end(); ++i) {
-      prims[i].box = geometry.bounds(i);
+      prims[i].box = geometry.bounds(ids[i]);
       prims[i].centroid = prims[i].box.center();
     }
   });
   Builder(prims, config, tree).build();
   relayout_depth_first(tree);
+  // The builder numbered the references 0..n-1 in `ids` order; hand back the primitives' own ids.
+  for (std::uint32_t& ref : tree.prim_ids) ref = ids[ref];
   return tree;
 }
 

@@ -4,25 +4,41 @@
 
 #include "raylab/accel/brute_force.h"
 #include "raylab/accel/bvh4.h"
+#include "raylab/accel/embree_accel.h"
 #include "raylab/core/error.h"
 
 namespace raylab {
 namespace {
 
-constexpr std::array<std::string_view, 3> kNames = {"bvh", "bvh2", "brute"};
+constexpr std::array<std::string_view, 6> kNames = {"bvh", "bvh2", "grid", "octree", "brute", "embree"};
 
 }  // namespace
 
-std::span<const std::string_view> accelerator_names() { return kNames; }
+std::span<const std::string_view> accelerator_names() {
+  return std::span<const std::string_view>(kNames).first(embree_available() ? kNames.size() : kNames.size() - 1);
+}
+
+std::string accelerator_name_list() {
+  std::string valid;
+  for (auto n : accelerator_names()) valid += (valid.empty() ? "" : ", ") + std::string(n);
+  return valid;
+}
 
 std::unique_ptr<Accelerator> make_accelerator(std::string_view name, const Geometry& geometry,
                                               const AccelConfig& config) {
-  if (name == "bvh") return std::make_unique<Bvh4>(geometry, config.bvh);
-  if (name == "bvh2") return std::make_unique<Bvh>(geometry, config.bvh);
-  if (name == "brute") return std::make_unique<BruteForce>(geometry);
-  std::string valid;
-  for (auto n : kNames) valid += (valid.empty() ? "" : ", ") + std::string(n);
-  throw UsageError("unknown accelerator '" + std::string(name) + "' (valid: " + valid + ")");
+  const std::vector<std::uint32_t> ids = geometry.primitive_ids();
+  return make_accelerator(name, geometry, ids, config);
+}
+
+std::unique_ptr<Accelerator> make_accelerator(std::string_view name, const Geometry& geometry,
+                                              std::span<const std::uint32_t> ids, const AccelConfig& config) {
+  if (name == "bvh") return std::make_unique<Bvh4>(geometry, ids, config.bvh);
+  if (name == "bvh2") return std::make_unique<Bvh>(geometry, ids, config.bvh);
+  if (name == "grid") return std::make_unique<UniformGrid>(geometry, ids, config.grid);
+  if (name == "octree") return std::make_unique<Octree>(geometry, ids, config.octree);
+  if (name == "brute") return std::make_unique<BruteForce>(geometry, ids);
+  if (name == "embree" && embree_available()) return make_embree_accelerator(geometry, ids);
+  throw UsageError("unknown accelerator '" + std::string(name) + "' (valid: " + accelerator_name_list() + ")");
 }
 
 }  // namespace raylab

@@ -45,6 +45,11 @@ inline bool intersect_leaf(const LeafPrimitives& leaf, std::uint32_t first, std:
       Ray probe = ray;
       probe.tmin = tmin;
       probe.tmax = tmax;
+      if constexpr (kAnyHit) {
+        // Any hit will do: a group (a whole sub-structure) may stop at its first one.
+        if (leaf.geometry->occluded(id, tri_ray, probe)) return true;
+        continue;
+      }
       hit_here = leaf.geometry->intersect(id, tri_ray, probe, best);
       tmax = probe.tmax;
     }

@@ -92,6 +92,25 @@ Vec3 Transform::normal(Vec3 n) const {
               static_cast<float>(sign * (c20 * n.x + c21 * n.y + c22 * n.z))};
 }
 
+Transform Transform::inverse() const {
+  const auto& a = m;
+  // Cofactors C[i][j]; the inverse of the linear part is C transposed over the determinant.
+  double c[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+      c[i][j] = a[i1][j1] * a[i2][j2] - a[i1][j2] * a[i2][j1];
+    }
+  const double inv_det = 1.0 / determinant();
+  Transform out;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) out.m[i][j] = c[j][i] * inv_det;
+  for (int i = 0; i < 3; ++i) {
+    out.m[i][3] = -(out.m[i][0] * a[0][3] + out.m[i][1] * a[1][3] + out.m[i][2] * a[2][3]);
+  }
+  return out;
+}
+
 double Transform::determinant() const {
   const auto& a = m;
   return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +

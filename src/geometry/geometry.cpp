@@ -55,6 +55,12 @@ void Geometry::add(const Quad& q, std::uint32_t object) {
   quad_objects.push_back(object);
 }
 
+std::vector<std::uint32_t> Geometry::primitive_ids() const {
+  std::vector<std::uint32_t> ids(size());
+  for (std::uint32_t i = 0; i < ids.size(); ++i) ids[i] = i;
+  return ids;
+}
+
 ShapeRef Geometry::resolve(std::uint32_t id) const {
   assert(id < size());
   if (id < triangles.size()) return {ShapeKind::kTriangle, id};
@@ -69,6 +75,7 @@ ShapeRef Geometry::resolve(std::uint32_t id) const {
 }
 
 Box3 Geometry::bounds(std::uint32_t prim_id) const {
+  if (prim_id >= kGroupIdBase) return groups[prim_id - kGroupIdBase].box;
   const ShapeRef r = resolve(prim_id);
   switch (r.kind) {
     case ShapeKind::kTriangle: {
@@ -125,6 +132,10 @@ std::uint32_t Geometry::object_of(std::uint32_t prim_id) const {
 }
 
 bool Geometry::intersect(std::uint32_t prim_id, const WatertightRay& wr, Ray& ray, Hit& hit) const {
+  if (prim_id >= kGroupIdBase) {
+    const GroupShape& g = groups[prim_id - kGroupIdBase];
+    return g.intersect(g.context, ray, hit);
+  }
   const ShapeRef r = resolve(prim_id);
   float t = 0.f, u = 0.f, v = 0.f;
   bool found = false;
@@ -153,6 +164,16 @@ bool Geometry::intersect(std::uint32_t prim_id, const WatertightRay& wr, Ray& ra
   hit.u = u;
   hit.v = v;
   return true;
+}
+
+bool Geometry::occluded(std::uint32_t prim_id, const WatertightRay& wr, const Ray& ray) const {
+  if (prim_id >= kGroupIdBase) {
+    const GroupShape& g = groups[prim_id - kGroupIdBase];
+    return g.occluded(g.context, ray);
+  }
+  Ray probe = ray;
+  Hit scratch;
+  return intersect(prim_id, wr, probe, scratch);
 }
 
 }  // namespace raylab

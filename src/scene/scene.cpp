@@ -1,5 +1,10 @@
 #include "raylab/scene/scene.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "raylab/core/error.h"
+
 namespace raylab {
 
 std::uint32_t Scene::add_material(Material m) {
@@ -10,6 +15,78 @@ std::uint32_t Scene::add_material(Material m) {
 std::uint32_t Scene::add_object(std::string name, std::uint32_t material) {
   objects.push_back({std::move(name), material});
   return static_cast<std::uint32_t>(objects.size() - 1);
+}
+
+std::uint32_t Scene::add_instance(std::uint32_t prototype, const Transform& to_world, std::uint32_t first_object) {
+  if (!to_world.valid()) throw UsageError("the transform is not invertible (or not finite)");
+  std::uint64_t offset = 0;
+  if (!instances.empty()) {
+    const Instance& last = instances.back();
+    offset = std::uint64_t(last.first_prim_offset) + prototypes[last.prototype].size();
+  }
+  if (std::uint64_t(geometry.size()) + offset + prototypes[prototype].size() >= kGroupIdBase) {
+    throw UsageError("too many primitives: instances would take the scene past 2^31 primitives");
+  }
+  instances.push_back({prototype, to_world, to_world.inverse(), static_cast<std::uint32_t>(offset), first_object});
+  return static_cast<std::uint32_t>(instances.size() - 1);
+}
+
+std::uint64_t Scene::primitive_count() const {
+  std::uint64_t n = geometry.size();
+  for (const Instance& i : instances) n += prototypes[i.prototype].size();
+  return n;
+}
+
+Box3 Scene::bounds() const {
+  Box3 b = geometry.bounds();
+  std::vector<Box3> prototype_bounds(prototypes.size());
+  for (std::size_t p = 0; p < prototypes.size(); ++p) prototype_bounds[p] = prototypes[p].bounds();
+  for (const Instance& i : instances) {
+    const Box3& pb = prototype_bounds[i.prototype];
+    if (pb.empty()) continue;
+    for (int corner = 0; corner < 8; ++corner) {
+      b.extend(i.to_world.point({corner & 1 ? pb.hi.x : pb.lo.x, corner & 2 ? pb.hi.y : pb.lo.y,
+                                 corner & 4 ? pb.hi.z : pb.lo.z}));
+    }
+  }
+  return b;
+}
+
+namespace {
+
+// The instance holding global primitive `prim_id` (which must be past the flat primitives).
+const Instance& instance_of(const Scene& scene, std::uint32_t prim_id) {
+  const std::uint32_t offset = prim_id - scene.geometry.size();
+  auto it = std::upper_bound(scene.instances.begin(), scene.instances.end(), offset,
+                             [](std::uint32_t o, const Instance& i) { return o < i.first_prim_offset; });
+  return *(it - 1);
+}
+
+}  // namespace
+
+std::uint32_t Scene::object_of(std::uint32_t prim_id) const {
+  if (prim_id < geometry.size()) return geometry.object_of(prim_id);
+  const Instance& inst = instance_of(*this, prim_id);
+  const std::uint32_t local = prim_id - geometry.size() - inst.first_prim_offset;
+  return inst.first_object + prototypes[inst.prototype].object_of(local);
+}
+
+SurfaceInteraction surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
+  if (hit.prim_id < scene.geometry.size()) return surface_at(scene.geometry, ray, hit);
+  const Instance& inst = instance_of(scene, hit.prim_id);
+  // The same parameter t names the same point in both spaces: the direction is mapped without
+  // normalising it.
+  Ray local_ray = ray;
+  local_ray.origin = inst.to_local.point(ray.origin);
+  local_ray.direction = inst.to_local.vector(ray.direction);
+  Hit local_hit = hit;
+  local_hit.prim_id = hit.prim_id - scene.geometry.size() - inst.first_prim_offset;
+  SurfaceInteraction si = surface_at(scene.prototypes[inst.prototype], local_ray, local_hit);
+  si.position = ray.at(hit.t);
+  si.geometric_normal = normalize(inst.to_world.normal(si.geometric_normal));
+  si.shading_normal = normalize(inst.to_world.normal(si.shading_normal));
+  si.object_id += inst.first_object;
+  return si;
 }
 
 namespace {
@@ -27,6 +104,12 @@ std::size_t Scene::memory_bytes() const {
                   bytes_of(g.quads) + bytes_of(g.triangle_objects) + bytes_of(g.sphere_objects) +
                   bytes_of(g.cylinder_objects) + bytes_of(g.disk_objects) + bytes_of(g.quad_objects) +
                   bytes_of(g.triangle_normals) + bytes_of(g.triangle_uvs);
+  for (const Geometry& p : prototypes) {
+    n += bytes_of(p.triangles) + bytes_of(p.spheres) + bytes_of(p.cylinders) + bytes_of(p.disks) + bytes_of(p.quads) +
+         bytes_of(p.triangle_objects) + bytes_of(p.sphere_objects) + bytes_of(p.cylinder_objects) +
+         bytes_of(p.disk_objects) + bytes_of(p.quad_objects) + bytes_of(p.triangle_normals) + bytes_of(p.triangle_uvs);
+  }
+  n += bytes_of(instances);
   n += bytes_of(objects) + bytes_of(materials) + bytes_of(lights);
   for (const SceneObject& o : objects) n += o.name.capacity();
   return n;

@@ -106,7 +106,9 @@ void compare(const Geometry& g, const Accelerator& bvh, const Accelerator& brute
 class BvhVsBrute : public ::testing::TestWithParam<std::string> {
  protected:
   std::unique_ptr<Accelerator> make(const Geometry& g, const BvhConfig& config = {}) const {
-    return make_accelerator(GetParam(), g, AccelConfig{config});
+    AccelConfig accel;
+    accel.bvh = config;
+    return make_accelerator(GetParam(), g, accel);
   }
 
   void run_scene(Geometry (*make_scene)(Sampler&), std::uint64_t seed, int ray_count = 10000) const {

@@ -2,6 +2,10 @@
 /// \file
 /// The reference structure: every ray against every primitive.
 
+#include <cstdint>
+#include <span>
+#include <vector>
+
 #include "raylab/accel/accelerator.h"
 #include "raylab/geometry/geometry.h"
 
@@ -13,6 +17,8 @@ class BruteForce final : public Accelerator {
  public:
   /// Keeps a reference to `geometry`, which must outlive this object.
   explicit BruteForce(const Geometry& geometry);
+  /// Tests only the primitives (or groups) `ids` of `geometry`, in that order.
+  BruteForce(const Geometry& geometry, std::span<const std::uint32_t> ids);
 
   Box3 bounds() const override { return m_bounds; }
   bool intersect(Ray& ray, Hit& hit) const override;
@@ -30,6 +36,7 @@ class BruteForce final : public Accelerator {
   bool occluded_impl(const Ray& ray, TraversalStats* stats) const;
 
   const Geometry& m_geometry;
+  std::vector<std::uint32_t> m_ids;  ///< what to test, in ascending order
   Box3 m_bounds;
   double m_build_seconds = 0.0;
 };

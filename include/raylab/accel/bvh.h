@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <new>
+#include <span>
 #include <vector>
 
 #include "raylab/accel/accelerator.h"
@@ -49,6 +50,9 @@ struct BvhTree {
 /// Builds a BVH over every primitive of `geometry` with the binned SAH, in parallel on oneTBB.
 BvhTree build_bvh(const Geometry& geometry, const BvhConfig& config = {});
 
+/// Builds a BVH over the primitives (or groups) `ids` of `geometry` only.
+BvhTree build_bvh(const Geometry& geometry, std::span<const std::uint32_t> ids, const BvhConfig& config = {});
+
 /// SAH cost of a tree (traversal cost per interior node and intersection cost per primitive,
 /// weighted by surface area relative to the root): used to compare builds.
 double sah_cost(const BvhTree& tree, const BvhConfig& config = {});
@@ -62,6 +66,8 @@ class Bvh final : public Accelerator {
  public:
   /// Builds the tree; keeps a reference to `geometry`, which must outlive this object.
   explicit Bvh(const Geometry& geometry, const BvhConfig& config = {});
+  /// Builds the tree over the primitives (or groups) `ids` of `geometry` only.
+  Bvh(const Geometry& geometry, std::span<const std::uint32_t> ids, const BvhConfig& config = {});
 
   Box3 bounds() const override;
   bool intersect(Ray& ray, Hit& hit) const override;

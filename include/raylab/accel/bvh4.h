@@ -4,6 +4,7 @@
 /// one SIMD operation per plane tests together. Fewer, wider steps per ray than the binary tree.
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "raylab/accel/accelerator.h"
@@ -38,6 +39,8 @@ class Bvh4 final : public Accelerator {
  public:
   /// Builds the tree; keeps a reference to `geometry`, which must outlive this object.
   explicit Bvh4(const Geometry& geometry, const BvhConfig& config = {});
+  /// Builds the tree over the primitives (or groups) `ids` of `geometry` only.
+  Bvh4(const Geometry& geometry, std::span<const std::uint32_t> ids, const BvhConfig& config = {});
 
   Box3 bounds() const override { return m_bounds; }
   bool intersect(Ray& ray, Hit& hit) const override;

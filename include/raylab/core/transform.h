@@ -35,6 +35,8 @@ struct Transform {
   Vec3 vector(Vec3 d) const;
   /// The image of normal `n` (inverse transpose, not normalised). Requires an invertible map.
   Vec3 normal(Vec3 n) const;
+  /// The inverse map. Requires an invertible map (see valid()).
+  Transform inverse() const;
   /// Determinant of the linear part (negative: the map mirrors, and windings flip).
   double determinant() const;
   /// True when every entry is finite and the linear part is invertible.

@@ -24,6 +24,23 @@ struct ShapeRef {
   std::uint32_t index;
 };
 
+/// First id of the group range: ids at or above it name `Geometry::groups[id - kGroupIdBase]`.
+inline constexpr std::uint32_t kGroupIdBase = 0x80000000u;
+
+/// A whole sub-structure (a wrapped mesh, or a placed instance) seen as one primitive by the top
+/// level of a two-level structure. Type-erased, so that geometry knows nothing of accelerators:
+/// the callbacks receive `context` back. Both answer in global primitive ids and honour the
+/// current closest hit passed in (its `t` in `ray.tmax`, its id for equal-distance ties).
+struct GroupShape {
+  Box3 box;                    ///< bounds of everything in the group (world space)
+  Sphere sphere{Vec3{}, -1.f};  ///< bounding sphere, when the group is wrapped in one (radius < 0: none)
+  const void* context = nullptr;
+  /// Closest hit in [ray.tmin, ray.tmax): on a hit shrinks ray.tmax, fills hit, returns true.
+  bool (*intersect)(const void* context, Ray& ray, Hit& hit) = nullptr;
+  /// Any hit in [ray.tmin, ray.tmax).
+  bool (*occluded)(const void* context, const Ray& ray) = nullptr;
+};
+
 /// Plain data: the scene's primitives, one array per kind, each primitive tagged with the object
 /// it belongs to. Global primitive ids number triangles first, then spheres, cylinders, disks and
 /// quads, so that for a scene of one mesh the id is the triangle's index in file order.
@@ -47,6 +64,10 @@ struct Geometry {
   /// Triangles without them get (0,0), (1,0), (0,1), i.e. their barycentric coordinates.
   std::vector<std::array<Vec2, 3>> triangle_uvs;
 
+  /// Sub-structures standing as single items (ids kGroupIdBase + index; not counted by size()).
+  /// Only two-level structures fill this, in their own copy of the shapes; scenes never do.
+  std::vector<GroupShape> groups;
+
   /// Appends a triangle of object `object`; returns its global id.
   std::uint32_t add(const Triangle& t, std::uint32_t object);
   /// Appends a triangle with per-vertex shading normals.
@@ -69,9 +90,11 @@ struct Geometry {
     return static_cast<std::uint32_t>(triangles.size() + spheres.size() + cylinders.size() + disks.size() +
                                       quads.size());
   }
+  /// The ids 0 .. size() - 1: every primitive, for building a structure over all of them.
+  std::vector<std::uint32_t> primitive_ids() const;
   /// Resolves a global id (must be < size()) to kind and local index.
   ShapeRef resolve(std::uint32_t prim_id) const;
-  /// Bounding box of primitive `prim_id`.
+  /// Bounding box of primitive `prim_id` (or of group `prim_id`).
   Box3 bounds(std::uint32_t prim_id) const;
   /// Bounding box of all primitives.
   Box3 bounds() const;
@@ -80,7 +103,12 @@ struct Geometry {
 
   /// Tests primitive `prim_id` against `ray` in [ray.tmin, ray.tmax). On a hit, shrinks
   /// `ray.tmax`, fills `hit` and returns true. `wr` must be WatertightRay(ray).
+  /// A group id calls the group's own `intersect`.
   bool intersect(std::uint32_t prim_id, const WatertightRay& wr, Ray& ray, Hit& hit) const;
+
+  /// True when primitive (or group) `prim_id` is hit anywhere in [ray.tmin, ray.tmax): the
+  /// any-hit test of shadow rays, which lets a group stop at its first hit.
+  bool occluded(std::uint32_t prim_id, const WatertightRay& wr, const Ray& ray) const;
 };
 
 }  // namespace raylab

@@ -6,7 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "raylab/core/box.h"
 #include "raylab/geometry/geometry.h"
+#include "raylab/geometry/instance.h"
+#include "raylab/geometry/shading.h"
 #include "raylab/scene/camera_spec.h"
 #include "raylab/scene/light.h"
 #include "raylab/scene/material.h"
@@ -23,7 +26,13 @@ struct SceneObject {
 /// Everything needed to render: geometry, objects, materials, lights, camera and settings.
 /// Plain data: nothing here knows about threads, pixels or files.
 struct Scene {
+  /// The scene's own primitives, in world space (global ids 0 .. geometry.size() - 1).
   Geometry geometry;
+  /// Meshes stored once in their own space, placed by `instances` (object ids in a prototype
+  /// are relative: instance.first_object + id).
+  std::vector<Geometry> prototypes;
+  /// Placements of prototypes; their primitives follow the flat ones in the global id space.
+  std::vector<Instance> instances;
   std::vector<SceneObject> objects;
   std::vector<Material> materials;
   std::vector<Light> lights;
@@ -42,10 +51,22 @@ struct Scene {
   std::uint32_t add_object(std::string name, std::uint32_t material);
   /// Bytes held by the scene's arrays (geometry, objects, materials, lights; not textures).
   std::size_t memory_bytes() const;
-  /// The material of primitive `prim_id`.
-  const Material& material_of(std::uint32_t prim_id) const {
-    return materials[objects[geometry.object_of(prim_id)].material];
-  }
+  /// Places prototype `prototype` under `to_world` (invertible), its objects starting at
+  /// `first_object`; returns the instance index. Throws UsageError when the global id space
+  /// (2^31 primitives) would overflow.
+  std::uint32_t add_instance(std::uint32_t prototype, const Transform& to_world, std::uint32_t first_object);
+  /// Primitives in total: flat ones plus every instance's.
+  std::uint64_t primitive_count() const;
+  /// Bounds of everything, instances included.
+  Box3 bounds() const;
+  /// The object of global primitive `prim_id`.
+  std::uint32_t object_of(std::uint32_t prim_id) const;
+  /// The material of global primitive `prim_id`.
+  const Material& material_of(std::uint32_t prim_id) const { return materials[objects[object_of(prim_id)].material]; }
 };
+
+/// Surface data for `hit` (global primitive id) on `ray`, instances included: the hit is
+/// recomputed in the prototype's space and carried back to world space.
+SurfaceInteraction surface_at(const Scene& scene, const Ray& ray, const Hit& hit);
 
 }  // namespace raylab

@@ -1,0 +1,33 @@
+#include "accel_options.h"
+
+#include "raylab/accel/factory.h"
+
+namespace raylab::cli {
+
+void add_accel_parameter_options(CLI::App& cmd, AccelArgs& args) {
+  SceneAccelOptions& o = args.options;
+  cmd.add_option("--grid-density", o.config.grid.density,
+                 "Uniform grid: cells per primitive (resolution rule in docs/accelerators.md)")
+      ->check(CLI::Range(1e-3, 1e3))
+      ->capture_default_str();
+  cmd.add_option("--octree-max-items", o.config.octree.max_items, "Octree: a cell with more primitives is split (K)")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  cmd.add_option("--octree-max-depth", o.config.octree.max_depth, "Octree: deepest level of subdivision (L)")
+      ->check(CLI::Range(0, 20))
+      ->capture_default_str();
+  cmd.add_option("--wrap", args.wrap, "Bounding volume around each mesh and instance: none, box or sphere")
+      ->check(CLI::IsMember({"none", "box", "sphere"}))
+      ->capture_default_str();
+  cmd.add_option("--bottom-accel", o.bottom,
+                 "Structure inside each wrapped mesh and instance (default: the same as the top level)")
+      ->check(CLI::IsMember(accelerator_choices()));
+}
+
+std::vector<std::string> accelerator_choices() {
+  std::vector<std::string> names;
+  for (auto n : accelerator_names()) names.emplace_back(n);
+  return names;
+}
+
+}  // namespace raylab::cli
