@@ -63,8 +63,7 @@ constexpr int kStackSize = 128;  // the builder bounds depth well below this (se
 
 Bvh::Bvh(const Geometry& geometry, const BvhConfig& config) : Bvh(geometry, geometry.primitive_ids(), config) {}
 
-Bvh::Bvh(const Geometry& geometry, std::span<const std::uint32_t> ids, const BvhConfig& config)
-    : m_geometry(geometry) {
+Bvh::Bvh(const Geometry& geometry, std::span<const std::uint32_t> ids, const BvhConfig& config) : m_geometry(geometry) {
   const auto start = std::chrono::steady_clock::now();
   m_tree = build_bvh(geometry, ids, config);
   m_triangle_count = static_cast<std::uint32_t>(geometry.triangles.size());

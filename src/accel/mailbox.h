@@ -36,8 +36,7 @@ class Mailboxes {
   };
 
   /// Mailboxes for `size` references.
-  explicit Mailboxes(std::uint32_t size)
-      : m_size(size), m_uid(next_uid()), m_alive(std::make_shared<char>(0)) {}
+  explicit Mailboxes(std::uint32_t size) : m_size(size), m_uid(next_uid()), m_alive(std::make_shared<char>(0)) {}
   Mailboxes(const Mailboxes&) = delete;
   Mailboxes& operator=(const Mailboxes&) = delete;
 

@@ -6,8 +6,11 @@
 
 namespace raylab {
 
-Octree::Octree(const Geometry& geometry, const OctreeConfig& config) : Octree(geometry, geometry.primitive_ids(), config) {}
-Octree::Octree(const Geometry&, std::span<const std::uint32_t>, const OctreeConfig&) { throw std::logic_error("octree: not written yet"); }
+Octree::Octree(const Geometry& geometry, const OctreeConfig& config)
+    : Octree(geometry, geometry.primitive_ids(), config) {}
+Octree::Octree(const Geometry&, std::span<const std::uint32_t>, const OctreeConfig&) {
+  throw std::logic_error("octree: not written yet");
+}
 Octree::~Octree() = default;
 Box3 Octree::bounds() const { return {}; }
 bool Octree::intersect(Ray&, Hit&) const { return false; }

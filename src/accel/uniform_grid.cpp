@@ -6,8 +6,11 @@
 
 namespace raylab {
 
-UniformGrid::UniformGrid(const Geometry& geometry, const GridConfig& config) : UniformGrid(geometry, geometry.primitive_ids(), config) {}
-UniformGrid::UniformGrid(const Geometry&, std::span<const std::uint32_t>, const GridConfig&) { throw std::logic_error("uniform_grid: not written yet"); }
+UniformGrid::UniformGrid(const Geometry& geometry, const GridConfig& config)
+    : UniformGrid(geometry, geometry.primitive_ids(), config) {}
+UniformGrid::UniformGrid(const Geometry&, std::span<const std::uint32_t>, const GridConfig&) {
+  throw std::logic_error("uniform_grid: not written yet");
+}
 UniformGrid::~UniformGrid() = default;
 Box3 UniformGrid::bounds() const { return {}; }
 bool UniformGrid::intersect(Ray&, Hit&) const { return false; }

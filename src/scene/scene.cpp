@@ -45,8 +45,8 @@ Box3 Scene::bounds() const {
     const Box3& pb = prototype_bounds[i.prototype];
     if (pb.empty()) continue;
     for (int corner = 0; corner < 8; ++corner) {
-      b.extend(i.to_world.point({corner & 1 ? pb.hi.x : pb.lo.x, corner & 2 ? pb.hi.y : pb.lo.y,
-                                 corner & 4 ? pb.hi.z : pb.lo.z}));
+      b.extend(i.to_world.point(
+          {corner & 1 ? pb.hi.x : pb.lo.x, corner & 2 ? pb.hi.y : pb.lo.y, corner & 4 ? pb.hi.z : pb.lo.z}));
     }
   }
   return b;

@@ -31,10 +31,10 @@ std::string_view wrap_mode_name(WrapMode mode);
 
 /// How to build a scene's structure.
 struct SceneAccelOptions {
-  std::string top = "bvh";        ///< structure over the top-level items (`--accel`)
-  std::string bottom;             ///< structure inside each mesh and prototype (empty: same as top)
+  std::string top = "bvh";  ///< structure over the top-level items (`--accel`)
+  std::string bottom;       ///< structure inside each mesh and prototype (empty: same as top)
   WrapMode wrap = WrapMode::kNone;
-  AccelConfig config;             ///< parameters shared by both levels
+  AccelConfig config;               ///< parameters shared by both levels
   std::uint32_t min_mesh_size = 2;  ///< objects with at least this many primitives are wrapped meshes
 };
 

@@ -32,7 +32,7 @@ inline constexpr std::uint32_t kGroupIdBase = 0x80000000u;
 /// the callbacks receive `context` back. Both answer in global primitive ids and honour the
 /// current closest hit passed in (its `t` in `ray.tmax`, its id for equal-distance ties).
 struct GroupShape {
-  Box3 box;                    ///< bounds of everything in the group (world space)
+  Box3 box;                     ///< bounds of everything in the group (world space)
   Sphere sphere{Vec3{}, -1.f};  ///< bounding sphere, when the group is wrapped in one (radius < 0: none)
   const void* context = nullptr;
   /// Closest hit in [ray.tmin, ray.tmax): on a hit shrinks ray.tmax, fills hit, returns true.
