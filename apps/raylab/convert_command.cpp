@@ -13,6 +13,7 @@
 #include "raylab/io/obj_writer.h"
 #include "raylab/io/ply_writer.h"
 #include "raylab/io/scene_loader.h"
+#include "raylab/scene/scene_merge.h"
 #include "raylab/scene/tessellate.h"
 
 namespace raylab::cli {
@@ -36,6 +37,7 @@ int run(const ConvertArgs& args) {
   load.allow_outside_paths = args.allow_outside_paths;
   Scene scene = load_scene(args.input, load);
   for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
+  bake_instances(scene);  // the formats written have no instancing: each placement becomes a copy
   std::string bytes;
   if (ext == ".nff") {
     // NFF keeps spheres and cones analytic.

@@ -45,11 +45,17 @@ int run(const InfoArgs& args) {
   fmt::print("scene       {}\n", args.scene);
   fmt::print("load time   {:.3f} s\n", seconds);
   fmt::print("memory      {:.2f} MiB (scene arrays; accelerators not built)\n", scene.memory_bytes() / 1048576.0);
-  fmt::print("primitives  {}\n", g.size());
+  fmt::print("primitives  {}\n", scene.primitive_count());
+  if (!scene.instances.empty()) {
+    std::uint64_t stored = 0;
+    for (const Geometry& p : scene.prototypes) stored += p.size();
+    fmt::print("  instances {} of {} meshes ({} primitives stored once; {} placed directly)\n", scene.instances.size(),
+               scene.prototypes.size(), stored, g.size());
+  }
   fmt::print("  triangles {}{}\n", g.triangles.size(), g.triangle_normals.empty() ? "" : " (with shading normals)");
   fmt::print("  spheres   {}\n  cylinders {} (cylinders and cones)\n  disks     {}\n  quads     {}\n", g.spheres.size(),
              g.cylinders.size(), g.disks.size(), g.quads.size());
-  const Box3 b = g.bounds();
+  const Box3 b = scene.bounds();
   if (!b.empty()) fmt::print("bounds      {} .. {}\n", vec(b.lo), vec(b.hi));
   fmt::print("objects     {}\n", scene.objects.size());
   fmt::print("materials   {}\n", scene.materials.size());

@@ -8,8 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "accel_options.h"
 #include "commands.h"
 #include "raylab/accel/factory.h"
+#include "raylab/accel/two_level.h"
 #include "raylab/core/error.h"
 #include "raylab/io/atomic_file.h"
 #include "raylab/io/image_io.h"
@@ -29,6 +31,7 @@ struct RenderArgs {
   std::optional<int> width, height, spp, max_depth;
   std::optional<std::uint64_t> seed;
   std::string accel = "bvh";
+  AccelArgs structure;
   int threads = 0;
   bool stats = false;
   bool quiet = false;
@@ -54,6 +57,9 @@ void print_stats(const RenderStats& s, const AccelInfo& info, double seconds) {
   fmt::print("{:<12}{:>14}{:>14}\n", "total", s.total_rays(), hits);
   fmt::print("nodes visited per ray     {:.2f}\n", total > 0 ? s.traversal.nodes_visited / total : 0.0);
   fmt::print("primitive tests per ray   {:.2f}\n", total > 0 ? s.traversal.prim_tests / total : 0.0);
+  if (s.traversal.volume_tests > 0) {
+    fmt::print("wrapper tests per ray     {:.2f}\n", total > 0 ? s.traversal.volume_tests / total : 0.0);
+  }
   fmt::print("accelerator               {} ({} primitives, {} nodes, {} leaves, depth {})\n", info.name,
              info.primitive_count, info.node_count, info.leaf_count, info.max_depth);
   fmt::print("build time                {:.2f} ms\n", info.build_seconds * 1e3);
@@ -104,7 +110,11 @@ int run(const RenderArgs& args) {
   if (args.max_depth) s.max_depth = *args.max_depth;
   if (args.seed) s.seed = *args.seed;
 
-  const std::unique_ptr<Accelerator> accel = make_accelerator(args.accel, scene.geometry);
+  SceneAccelOptions structure = args.structure.options;
+  structure.top = args.accel;
+  structure.wrap = parse_wrap_mode(args.structure.wrap);
+  const std::unique_ptr<Accelerator> accel =
+      make_scene_accelerator(scene.geometry, scene.prototypes, scene.instances, structure);
   if (args.spd_protocol) {
     Film film(kSpdProtocolSize, kSpdProtocolSize);
     RenderOptions options;
@@ -153,9 +163,10 @@ CommandRunner add_render_command(CLI::App& app) {
   cmd->add_option("--width", args->width, "Image width in pixels")->check(CLI::Range(1, 32768));
   cmd->add_option("--height", args->height, "Image height in pixels")->check(CLI::Range(1, 32768));
   cmd->add_option("--spp", args->spp, "Samples per pixel (jittered, box filter)")->check(CLI::Range(1, 1 << 16));
-  std::vector<std::string> names;
-  for (auto n : accelerator_names()) names.emplace_back(n);
-  cmd->add_option("--accel", args->accel, "Acceleration structure")->check(CLI::IsMember(names))->capture_default_str();
+  cmd->add_option("--accel", args->accel, "Acceleration structure")
+      ->check(CLI::IsMember(accelerator_choices()))
+      ->capture_default_str();
+  add_accel_parameter_options(*cmd, args->structure);
   cmd->add_option("--threads", args->threads, "Worker threads; 0 = all cores")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();

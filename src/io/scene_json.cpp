@@ -206,7 +206,7 @@ class SceneReader {
     if (root.has("meshes")) read_meshes(root.child("meshes", "'meshes'"));
     if (!root.has("objects")) root.fail("the scene needs 'objects' (an array)");
     read_objects(root.child("objects", "'objects'"));
-    if (m_scene.geometry.size() == 0) root.fail_at("objects", "the scene has no primitives");
+    if (m_scene.primitive_count() == 0) root.fail_at("objects", "the scene has no primitives");
     const bool has_camera = root.has("camera");
     const bool has_lights = root.has("lights");
     if (has_camera) read_camera(root.child("camera", "'camera'"));
@@ -483,7 +483,7 @@ class SceneReader {
         const std::string mesh = o.string("mesh");
         const auto it = m_meshes.find(mesh);
         if (it == m_meshes.end()) o.fail_at("mesh", "unknown mesh '" + mesh + "'" + mesh_list());
-        append_scene(m_scene, it->second, read_transform(o), material_of(o, false));
+        place_instance(name, mesh, it->second, read_transform(o), material_of(o, false));
       } else {
         o.check_keys({"type", "name", "material", "generator", "size", "transform"});
         std::string source = "spd:" + o.string("generator");
@@ -513,6 +513,25 @@ class SceneReader {
     if (report.triangles == 0) o.fail("the polygon has zero area");
   }
 
+  // An instance of a named mesh: the mesh's geometry becomes a prototype the first time it is
+  // placed (stored once), and each placement gets its own objects, so materials can differ.
+  void place_instance(const std::string& name, const std::string& mesh_name, const Scene& mesh,
+                      const Transform& to_world, std::optional<std::uint32_t> material) {
+    auto [it, fresh] = m_prototypes.try_emplace(mesh_name);
+    PrototypeInfo& proto = it->second;
+    if (fresh) {
+      proto.index = static_cast<std::uint32_t>(m_scene.prototypes.size());
+      m_scene.prototypes.push_back(mesh.geometry);
+      for (const Material& m : mesh.materials) proto.materials.push_back(m_scene.add_material(m));
+    }
+    const auto first_object = static_cast<std::uint32_t>(m_scene.objects.size());
+    for (const SceneObject& obj : mesh.objects) {
+      m_scene.add_object(name.empty() ? obj.name : name + "/" + obj.name,
+                         material ? *material : proto.materials[obj.material]);
+    }
+    m_scene.add_instance(proto.index, to_world, first_object);
+  }
+
   std::string mesh_list() const {
     std::string names;
     for (const auto& [name, mesh] : m_meshes) names += (names.empty() ? "" : ", ") + name;
@@ -525,7 +544,12 @@ class SceneReader {
   Scene m_scene;
   std::map<std::string, std::uint32_t> m_materials;
   std::map<std::string, Scene> m_meshes;  // loaded once, placed by every instance
-  std::optional<Scene> m_borrowed;        // the first SPD generator's scene: camera and lights
+  struct PrototypeInfo {
+    std::uint32_t index = 0;               // into Scene::prototypes
+    std::vector<std::uint32_t> materials;  // the mesh's materials, as added to the scene
+  };
+  std::map<std::string, PrototypeInfo> m_prototypes;  // meshes placed so far
+  std::optional<Scene> m_borrowed;                    // the first SPD generator's scene: camera and lights
 };
 
 }  // namespace

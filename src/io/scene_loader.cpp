@@ -20,7 +20,7 @@
 namespace raylab {
 
 void fit_camera_and_lights(Scene& scene) {
-  const Box3 box = scene.geometry.bounds();
+  const Box3 box = scene.bounds();
   Vec3 center{0.f};
   float radius = 1.f;
   if (!box.empty()) {

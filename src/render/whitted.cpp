@@ -124,7 +124,7 @@ Color WhittedIntegrator::trace(const TraceContext& ctx, Ray ray, int depth, RayK
   if (!found) return background(ctx.scene.settings, ray.direction);
 
   const Scene& scene = ctx.scene;
-  const SurfaceInteraction si = surface_at(scene.geometry, ray, hit);
+  const SurfaceInteraction si = surface_at(scene, ray, hit);
   const Material& m = scene.materials[scene.objects[si.object_id].material];
   const Vec3 d = normalize(ray.direction);
   const Vec3 n = si.shading_normal;

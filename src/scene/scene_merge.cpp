@@ -1,5 +1,6 @@
 #include "raylab/scene/scene_merge.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -22,27 +23,22 @@ std::optional<double> similarity_scale(const Transform& t) {
   return std::sqrt(scale2);
 }
 
-void append_scene(Scene& dst, const Scene& src, const Transform& placement, std::optional<std::uint32_t> material) {
+namespace {
+
+// Throws UsageError when `placement` cannot be applied to `g` (see append_scene).
+void check_placement(const Geometry& g, const Transform& placement) {
   if (!placement.valid()) throw UsageError("the transform is not invertible (or not finite)");
-  const Geometry& g = src.geometry;
-  const std::optional<double> scale = similarity_scale(placement);
-  if (!scale && (!g.spheres.empty() || !g.cylinders.empty() || !g.disks.empty())) {
+  if (!similarity_scale(placement) && (!g.spheres.empty() || !g.cylinders.empty() || !g.disks.empty())) {
     throw UsageError(
         "a transform with non-uniform scale or shear cannot be applied to spheres, cylinders or disks (they stay "
         "analytic); use a uniform scale");
   }
-  // Objects and materials: remap src ids into dst.
-  std::vector<std::uint32_t> material_map(src.materials.size());
-  if (!material) {
-    for (std::size_t i = 0; i < src.materials.size(); ++i) material_map[i] = dst.add_material(src.materials[i]);
-  }
-  std::vector<std::uint32_t> object_map(src.objects.size());
-  for (std::size_t i = 0; i < src.objects.size(); ++i) {
-    const SceneObject& o = src.objects[i];
-    object_map[i] = dst.add_object(o.name, material ? *material : material_map[o.material]);
-  }
+}
 
-  Geometry& out = dst.geometry;
+// Appends `g` transformed by `placement` (already checked) to `out`, object ids through `object_map`.
+void append_geometry(Geometry& out, const Geometry& g, const Transform& placement,
+                     const std::vector<std::uint32_t>& object_map) {
+  const std::optional<double> scale = similarity_scale(placement);
   const bool mirror = placement.determinant() < 0.0;
   for (std::size_t i = 0; i < g.triangles.size(); ++i) {
     const Triangle& t = g.triangles[i];
@@ -87,6 +83,37 @@ void append_scene(Scene& dst, const Scene& src, const Transform& placement, std:
     out.add(Quad{placement.point(q.corner), placement.vector(q.edge_u), placement.vector(q.edge_v)},
             object_map[g.quad_objects[i]]);
   }
+}
+
+}  // namespace
+
+void append_scene(Scene& dst, const Scene& src, const Transform& placement, std::optional<std::uint32_t> material) {
+  check_placement(src.geometry, placement);
+  // Objects and materials: remap src ids into dst.
+  std::vector<std::uint32_t> material_map(src.materials.size());
+  if (!material) {
+    for (std::size_t i = 0; i < src.materials.size(); ++i) material_map[i] = dst.add_material(src.materials[i]);
+  }
+  std::vector<std::uint32_t> object_map(src.objects.size());
+  for (std::size_t i = 0; i < src.objects.size(); ++i) {
+    const SceneObject& o = src.objects[i];
+    object_map[i] = dst.add_object(o.name, material ? *material : material_map[o.material]);
+  }
+  append_geometry(dst.geometry, src.geometry, placement, object_map);
+}
+
+void bake_instances(Scene& scene) {
+  for (const Instance& inst : scene.instances) {
+    const Geometry& proto = scene.prototypes[inst.prototype];
+    check_placement(proto, inst.to_world);
+    std::uint32_t objects = 0;
+    for (std::uint32_t id = 0; id < proto.size(); ++id) objects = std::max(objects, proto.object_of(id) + 1);
+    std::vector<std::uint32_t> object_map(objects);
+    for (std::uint32_t k = 0; k < objects; ++k) object_map[k] = inst.first_object + k;
+    append_geometry(scene.geometry, proto, inst.to_world, object_map);
+  }
+  scene.instances.clear();
+  scene.prototypes.clear();
 }
 
 }  // namespace raylab

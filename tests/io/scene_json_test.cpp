@@ -14,6 +14,7 @@
 #include "raylab/io/scene_json.h"
 #include "raylab/io/scene_loader.h"
 #include "raylab/render/renderer.h"
+#include "raylab/scene/scene_merge.h"
 #include "raylab/scene/spd.h"
 
 namespace raylab {
@@ -125,7 +126,14 @@ TEST(SceneJson, TransformsApplyInTheOrderWritten) {
        "transform": [{"scale": 2}, {"rotate": {"axis": [0, 0, 1], "degrees": 90}}, {"translate": [10, 0, 0]}]},
       {"type": "instance", "mesh": "t", "transform": {"matrix": [1, 0, 0, 5, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}},
       {"type": "instance", "mesh": "t", "transform": {"scale": [-1, 1, 1]}}]})";
-  const Scene s = parse_scene_json(text, (dir / "s.json").string(), dir.string());
+  Scene s = parse_scene_json(text, (dir / "s.json").string(), dir.string());
+  // The two placements of mesh "t" are instances of one stored prototype; baked into copies,
+  // they follow the mesh object's triangle.
+  ASSERT_EQ(s.geometry.triangles.size(), 1u);
+  ASSERT_EQ(s.prototypes.size(), 1u);
+  ASSERT_EQ(s.instances.size(), 2u);
+  EXPECT_EQ(s.primitive_count(), 3u);
+  bake_instances(s);
   ASSERT_EQ(s.geometry.triangles.size(), 3u);
   const Triangle& a = s.geometry.triangles[0];
   EXPECT_NEAR(a.p0.x, 10.f, 1e-5f);

@@ -12,12 +12,14 @@ struct TraversalStats {
   std::uint64_t nodes_visited = 0;  ///< interior + leaf nodes (or cells) whose box was tested
   std::uint64_t prim_tests = 0;     ///< ray-primitive intersection tests
   std::uint64_t hits = 0;           ///< queries that found a hit
+  std::uint64_t volume_tests = 0;   ///< bounding volumes (wrappers of meshes and instances) tested
 
   /// Adds another record's counts to this one.
   constexpr TraversalStats& operator+=(const TraversalStats& o) {
     nodes_visited += o.nodes_visited;
     prim_tests += o.prim_tests;
     hits += o.hits;
+    volume_tests += o.volume_tests;
     return *this;
   }
 };

@@ -23,4 +23,9 @@ std::optional<double> similarity_scale(const Transform& t);
 void append_scene(Scene& dst, const Scene& src, const Transform& placement,
                   std::optional<std::uint32_t> material = std::nullopt);
 
+/// Replaces every instance by a transformed copy of its prototype in `scene.geometry` (for
+/// writers, which know nothing of instancing). Throws UsageError when an instance's transform is
+/// not a similarity and its prototype has spheres, cylinders or disks.
+void bake_instances(Scene& scene);
+
 }  // namespace raylab
