@@ -1,20 +1,25 @@
-// The SPD testing procedure's ray-count invariants depend only on the scene: every accelerator
-// must report the same counts on all seven SPD scenes.
+// The SPD testing procedure's ray-count invariants depend only on the scene: every accelerator,
+// wrapped or not, must report the same counts on all seven SPD scenes.
 
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "raylab/accel/factory.h"
+#include "raylab/accel/two_level.h"
 #include "raylab/render/spd_protocol.h"
 #include "raylab/scene/spd.h"
 
 namespace raylab {
 namespace {
 
-SpdProtocolCounts protocol_counts(const std::string& source, const std::string& accel_name) {
+SpdProtocolCounts protocol_counts(const std::string& source, const std::string& accel_name,
+                                  WrapMode wrap = WrapMode::kNone) {
   Scene scene = make_spd_scene(source);
-  const auto accel = make_accelerator(accel_name, scene.geometry);
+  SceneAccelOptions options_for_accel;
+  options_for_accel.top = accel_name;
+  options_for_accel.wrap = wrap;
+  const auto accel = make_scene_accelerator(scene.geometry, scene.prototypes, scene.instances, options_for_accel);
   Film film(kSpdProtocolSize, kSpdProtocolSize);
   RenderOptions options;
   options.threads = 2;
@@ -42,16 +47,24 @@ TEST_P(SpdProtocol, CountsAreTheSameForEveryAcceleratorAtSmallSize) {
   EXPECT_LE(brute.primary_hits, brute.primary);
   EXPECT_LE(brute.shadow_hits, brute.shadow);
   EXPECT_LE(brute.secondary_hits, brute.secondary);
-  for (const char* name : {"bvh", "bvh2"}) {
+  for (const char* name : {"bvh", "bvh2", "grid", "octree"}) {
     SCOPED_TRACE(name);
     expect_same(protocol_counts(source, name), brute);
   }
+  // Wrapped meshes (each SPD object with several primitives becomes one item behind a volume).
+  SCOPED_TRACE("wrapped");
+  expect_same(protocol_counts(source, "bvh", WrapMode::kBox), brute);
+  expect_same(protocol_counts(source, "octree", WrapMode::kSphere), brute);
 }
 
-// At the default size the BVH layouts must agree with each other too.
-TEST_P(SpdProtocol, CountsAreTheSameForBothBvhLayoutsAtDefaultSize) {
+// At the default size (too big for brute force) every structure must agree with the BVH.
+TEST_P(SpdProtocol, CountsAreTheSameForEveryAcceleratorAtDefaultSize) {
   const std::string source = "spd:" + GetParam();
-  expect_same(protocol_counts(source, "bvh2"), protocol_counts(source, "bvh"));
+  const SpdProtocolCounts bvh = protocol_counts(source, "bvh");
+  for (const char* name : {"bvh2", "grid", "octree"}) {
+    SCOPED_TRACE(name);
+    expect_same(protocol_counts(source, name), bvh);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(AllSeven, SpdProtocol,
