@@ -66,9 +66,10 @@ bool ray_meets_ball(const Sphere& s, const Ray& ray) {
 // The wrapper test a ray pays before entering the group's own structure.
 bool enters_wrapper(const Group& g, const Ray& ray) {
   if (t_count_sink != nullptr) {
-    // The top level counted this item as a primitive test; it is a bounding-volume test.
+    // The top level counted this item as a primitive test; it is a bounding-volume test, or,
+    // unwrapped, no test at all (the ray goes straight into the instance's structure).
     --t_count_sink->prim_tests;
-    ++t_count_sink->volume_tests;
+    if (g.wrap != WrapMode::kNone) ++t_count_sink->volume_tests;
   }
   if (g.wrap == WrapMode::kSphere) return ray_meets_ball(g.sphere, ray);
   if (g.wrap == WrapMode::kBox) {
@@ -279,13 +280,15 @@ class TwoLevel final : public Accelerator {
     info.build_seconds = m_build_seconds;
     info.memory_bytes += bytes_of(m_top.triangles) + bytes_of(m_top.spheres) + bytes_of(m_top.cylinders) +
                          bytes_of(m_top.disks) + bytes_of(m_top.quads) + bytes_of(m_top.groups) + bytes_of(m_groups);
+    int deepest_bottom = 0;
     for (const auto& b : m_bottoms) {
       const AccelInfo bi = b->info();
       info.memory_bytes += bi.memory_bytes;
       info.node_count += bi.node_count;
       info.leaf_count += bi.leaf_count;
-      info.max_depth = std::max(info.max_depth, info.max_depth + bi.max_depth);
+      deepest_bottom = std::max(deepest_bottom, bi.max_depth);
     }
+    info.max_depth += deepest_bottom;
     info.primitive_count = m_primitive_count;
     return info;
   }
