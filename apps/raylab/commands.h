@@ -23,4 +23,8 @@ CommandRunner add_info_command(CLI::App& app);
 /// `raylab convert IN OUT`: writes a scene as NFF, OBJ or binary PLY.
 CommandRunner add_convert_command(CLI::App& app);
 
+/// `raylab compare SCENE [--accels A,B,...]`: every structure on the same rays, side by side;
+/// exits 3 when two structures disagree on some ray.
+CommandRunner add_compare_command(CLI::App& app);
+
 }  // namespace raylab::cli

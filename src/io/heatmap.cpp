@@ -1,1 +1,254 @@
-// PLACEHOLDER, being written.
+#include "raylab/io/heatmap.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <system_error>
+
+#include "raylab/core/error.h"
+#include "raylab/io/image_io.h"
+#include "raylab/render/film.h"
+
+namespace raylab {
+namespace {
+
+// Viridis sampled at nine evenly spaced points; between them the colour is interpolated.
+constexpr std::array<Rgb8, 9> kViridis = {{{68, 1, 84},
+                                           {71, 45, 123},
+                                           {59, 82, 139},
+                                           {44, 114, 142},
+                                           {33, 145, 140},
+                                           {40, 174, 128},
+                                           {94, 201, 98},
+                                           {173, 220, 48},
+                                           {253, 231, 37}}};
+
+// A 3x5 font: five rows of three pixels per glyph, '#' = ink, written row after row from the top.
+struct Glyph {
+  char c;
+  const char* rows;  // 15 characters
+};
+// clang-format off
+constexpr Glyph kFont[] = {
+    {'0', "###" "# #" "# #" "# #" "###"},
+    {'1', " # " "## " " # " " # " "###"},
+    {'2', "## " "  #" " # " "#  " "###"},
+    {'3', "## " "  #" " # " "  #" "## "},
+    {'4', "# #" "# #" "###" "  #" "  #"},
+    {'5', "###" "#  " "## " "  #" "## "},
+    {'6', " ##" "#  " "## " "# #" " # "},
+    {'7', "###" "  #" " # " " # " " # "},
+    {'8', " # " "# #" " # " "# #" " # "},
+    {'9', " # " "# #" " ##" "  #" "## "},
+    {'A', " # " "# #" "###" "# #" "# #"},
+    {'B', "## " "# #" "## " "# #" "## "},
+    {'C', " ##" "#  " "#  " "#  " " ##"},
+    {'D', "## " "# #" "# #" "# #" "## "},
+    {'E', "###" "#  " "## " "#  " "###"},
+    {'F', "###" "#  " "## " "#  " "#  "},
+    {'G', " ##" "#  " "# #" "# #" " ##"},
+    {'H', "# #" "# #" "###" "# #" "# #"},
+    {'I', "###" " # " " # " " # " "###"},
+    {'J', "  #" "  #" "  #" "# #" " # "},
+    {'K', "# #" "# #" "## " "# #" "# #"},
+    {'L', "#  " "#  " "#  " "#  " "###"},
+    {'M', "# #" "###" "###" "# #" "# #"},
+    {'N', "## " "# #" "# #" "# #" "# #"},
+    {'O', " # " "# #" "# #" "# #" " # "},
+    {'P', "## " "# #" "## " "#  " "#  "},
+    {'Q', " # " "# #" "# #" "## " " ##"},
+    {'R', "## " "# #" "## " "# #" "# #"},
+    {'S', " ##" "#  " " # " "  #" "## "},
+    {'T', "###" " # " " # " " # " " # "},
+    {'U', "# #" "# #" "# #" "# #" "###"},
+    {'V', "# #" "# #" "# #" "# #" " # "},
+    {'W', "# #" "# #" "###" "###" "# #"},
+    {'X', "# #" "# #" " # " "# #" "# #"},
+    {'Y', "# #" "# #" " # " " # " " # "},
+    {'Z', "###" "  #" " # " "#  " "###"},
+    {'.', "   " "   " "   " "   " " # "},
+    {'-', "   " "   " "###" "   " "   "},
+    {'/', "  #" "  #" " # " "#  " "#  "},
+    {':', "   " " # " "   " " # " "   "},
+    {'(', " # " "#  " "#  " "#  " " # "},
+    {')', " # " "  #" "  #" "  #" " # "},
+    {'_', "   " "   " "   " "   " "###"},
+    {',', "   " "   " "   " " # " "#  "},
+    {'=', "   " "###" "   " "###" "   "},
+};
+// clang-format on
+
+const char* glyph_rows(char c) {
+  const char up = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  for (const Glyph& g : kFont) {
+    if (g.c == up) return g.rows;
+  }
+  return nullptr;
+}
+
+constexpr Rgb8 kBackground{24, 24, 28};
+constexpr Rgb8 kInk{235, 235, 235};
+constexpr int kMinWidth = 160;  // legend room at font scale 1 (pixels)
+
+// A count for a tick label: exact below 10000, then with a k or M suffix.
+std::string tick_label(double v) {
+  if (v < 10000.0) return fmt::format("{:.0f}", v);
+  if (v < 1e7) return fmt::format("{:.0f}K", v / 1e3);
+  return fmt::format("{:.0f}M", v / 1e6);
+}
+
+// Tick values: 0, the 1-2-5 steps below the maximum, and the maximum.
+std::vector<double> tick_values(double max_value) {
+  std::vector<double> ticks = {0.0};
+  for (double decade = 1.0; decade < max_value; decade *= 10.0) {
+    for (double m : {1.0, 2.0, 5.0}) {
+      if (m * decade < max_value) ticks.push_back(m * decade);
+    }
+  }
+  if (max_value > 0.0) ticks.push_back(max_value);
+  return ticks;
+}
+
+// The bar with labels under it, in the strip starting at row `top`.
+void draw_legend(Rgb8Image& img, int top, const HeatScale& scale, std::string_view title, int s) {
+  const int margin = 6 * s;
+  draw_text(img, margin, top + 4 * s, title, kInk, s);
+  const int bar_top = top + 12 * s;
+  const int bar_h = 8 * s;
+  const int x0 = margin;
+  const int x1 = img.width - margin;  // exclusive
+  const int bar_w = std::max(x1 - x0, 2);
+  for (int x = x0; x < x1; ++x) {
+    const Rgb8 c = heat_colour(static_cast<float>(x - x0) / static_cast<float>(bar_w - 1));
+    for (int y = bar_top; y < bar_top + bar_h; ++y) img.put(x, y, c);
+  }
+  // Labels placed greedily from the left; the maximum first, so it is never crowded out.
+  const std::vector<double> ticks = tick_values(scale.max_value);
+  std::vector<std::pair<int, int>> taken;  // label extents [left, right)
+  auto place = [&](double v, bool force) {
+    const int x = x0 + static_cast<int>(std::lround(scale.position(v) * static_cast<float>(bar_w - 1)));
+    const std::string label = tick_label(v);
+    const int w = text_width(label, s);
+    const int left = std::clamp(x - w / 2, 0, std::max(img.width - w, 0));
+    for (const auto& [l, r] : taken) {
+      if (!force && left < r + 3 * s && left + w + 3 * s > l) return;
+    }
+    taken.emplace_back(left, left + w);
+    for (int y = bar_top + bar_h; y < bar_top + bar_h + 2 * s; ++y) {
+      for (int dx = 0; dx < s; ++dx) img.put(x + dx, y, kInk);
+    }
+    draw_text(img, left, bar_top + bar_h + 3 * s, label, kInk, s);
+  };
+  place(ticks.back(), true);
+  for (std::size_t i = 0; i + 1 < ticks.size(); ++i) place(ticks[i], false);
+}
+
+}  // namespace
+
+Rgb8Image::Rgb8Image(int w, int h, Rgb8 fill)
+    : width(w), height(h), pixels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), fill) {}
+
+void Rgb8Image::put(int x, int y, Rgb8 c) {
+  if (x >= 0 && y >= 0 && x < width && y < height) at(x, y) = c;
+}
+
+Rgb8 heat_colour(float t) {
+  const float f = std::clamp(std::isfinite(t) ? t : 0.f, 0.f, 1.f) * static_cast<float>(kViridis.size() - 1);
+  const auto i = std::min(static_cast<std::size_t>(f), kViridis.size() - 2);
+  const float w = f - static_cast<float>(i);
+  auto mix = [w](std::uint8_t a, std::uint8_t b) {
+    return static_cast<std::uint8_t>(std::lround(static_cast<float>(a) + w * static_cast<float>(b - a)));
+  };
+  const Rgb8 a = kViridis[i], b = kViridis[i + 1];
+  return {mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b)};
+}
+
+float HeatScale::position(double value) const {
+  if (!(max_value > 0.0) || !(value > 0.0)) return 0.f;
+  return static_cast<float>(std::min(1.0, std::log1p(value) / std::log1p(max_value)));
+}
+
+void draw_text(Rgb8Image& image, int x, int y, std::string_view text, Rgb8 colour, int scale) {
+  for (const char c : text) {
+    if (const char* rows = glyph_rows(c)) {
+      for (int gy = 0; gy < 5; ++gy) {
+        for (int gx = 0; gx < 3; ++gx) {
+          if (rows[gy * 3 + gx] != '#') continue;
+          for (int sy = 0; sy < scale; ++sy) {
+            for (int sx = 0; sx < scale; ++sx) image.put(x + gx * scale + sx, y + gy * scale + sy, colour);
+          }
+        }
+      }
+    }
+    x += 4 * scale;
+  }
+}
+
+int text_width(std::string_view text, int scale) {
+  return text.empty() ? 0 : (4 * static_cast<int>(text.size()) - 1) * scale;
+}
+
+int legend_height(int scale) { return 32 * scale; }
+
+Rgb8Image render_heatmap(std::span<const std::uint32_t> values, int width, int height, const HeatScale& scale,
+                         std::string_view title) {
+  if (values.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
+    throw std::invalid_argument("render_heatmap: values do not match the image size");
+  }
+  const int s = width >= 2 * kMinWidth ? 2 : 1;
+  Rgb8Image img(std::max(width, kMinWidth * s), height + legend_height(s), kBackground);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) img.at(x, y) = scale.colour(values[static_cast<std::size_t>(y) * width + x]);
+  }
+  draw_legend(img, height, scale, title, s);
+  return img;
+}
+
+void write_png(const Rgb8Image& image, const std::string& path) {
+  // Through the film writer, which encodes linear values to sRGB: decoding each byte to linear
+  // first makes the round trip exact (tested), and keeps one PNG writer and its atomic write.
+  Film film(image.width, image.height);
+  std::array<float, 256> linear{};
+  for (int i = 0; i < 256; ++i) linear[i] = srgb_to_linear(static_cast<float>(i) / 255.f);
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const Rgb8 c = image.at(x, y);
+      film.at(x, y) = Color{linear[c.r], linear[c.g], linear[c.b]};
+    }
+  }
+  write_image(film, path);
+}
+
+std::vector<std::string> write_compare_heatmaps(const CompareResult& result, const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) {
+    throw InputError(dir, "cannot create the heat map folder: " + (ec ? ec.message() : "a file has that name"));
+  }
+  HeatScale tests, nodes;
+  tests.max_value = nodes.max_value = 0.0;
+  for (const AccelMeasure& m : result.accels) {
+    for (std::uint32_t v : m.pixel_tests) tests.max_value = std::max(tests.max_value, static_cast<double>(v));
+    for (std::uint32_t v : m.pixel_nodes) nodes.max_value = std::max(nodes.max_value, static_cast<double>(v));
+  }
+  std::vector<std::string> written;
+  for (const AccelMeasure& m : result.accels) {
+    if (m.skipped || !m.has_counts || m.pixel_tests.empty()) continue;
+    const std::string base = (std::filesystem::path(dir) / m.name).string();
+    const Rgb8Image t = render_heatmap(m.pixel_tests, result.width, result.height, tests,
+                                       m.name + ": primitive tests per pixel, log scale");
+    write_png(t, base + "-tests.png");
+    written.push_back(base + "-tests.png");
+    const Rgb8Image n = render_heatmap(m.pixel_nodes, result.width, result.height, nodes,
+                                       m.name + ": nodes or cells per pixel, log scale");
+    write_png(n, base + "-nodes.png");
+    written.push_back(base + "-nodes.png");
+  }
+  return written;
+}
+
+}  // namespace raylab

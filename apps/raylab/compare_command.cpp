@@ -1,0 +1,145 @@
+// `raylab compare`: argument parsing and printing only; the measuring is in the library
+// (render/accel_compare.h), the heat maps and the chart in io/.
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "accel_options.h"
+#include "commands.h"
+#include "raylab/core/error.h"
+#include "raylab/io/atomic_file.h"
+#include "raylab/io/heatmap.h"
+#include "raylab/io/scene_loader.h"
+#include "raylab/io/svg_chart.h"
+#include "raylab/render/accel_compare.h"
+
+namespace raylab::cli {
+namespace {
+
+// Exit code when two structures disagree on some ray (after the table and the rays are printed).
+constexpr int kDisagreementExit = 3;
+// Width of the primary-ray image when none is given; the height follows the scene's aspect.
+constexpr int kDefaultWidth = 512;
+
+struct CompareArgs {
+  std::string scene;
+  std::vector<std::string> accels = default_compare_accels();
+  AccelArgs accel;
+  std::optional<int> width, height;
+  int threads = 0;
+  int repeat = 3;
+  std::uint64_t seed = 0;
+  double brute_limit = 60.0;
+  std::string csv, json, heatmaps, plot;
+  bool allow_outside_paths = false;
+  bool quiet = false;
+};
+
+// The image size: as given, else 512 wide with the scene's own aspect ratio.
+void image_size(const CompareArgs& args, const RenderSettings& s, RaySetOptions& rays) {
+  const double aspect = static_cast<double>(s.height) / static_cast<double>(std::max(s.width, 1));
+  rays.width = args.width.value_or(kDefaultWidth);
+  rays.height = args.height.value_or(std::max(1, static_cast<int>(std::lround(rays.width * aspect))));
+  if (args.height && !args.width) rays.width = std::max(1, static_cast<int>(std::lround(*args.height / aspect)));
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  write_file_atomically(path, std::span(reinterpret_cast<const unsigned char*>(text.data()), text.size()));
+}
+
+int run(const CompareArgs& args) {
+  if (!args.plot.empty() && !args.plot.ends_with(".svg")) {
+    throw UsageError("cannot write '" + args.plot + "': the plot is an SVG file (.svg)");
+  }
+  for (const std::string* path : {&args.csv, &args.json, &args.plot}) {
+    if (!path->empty()) check_writable(*path);  // fail before the work, not after it
+  }
+  CompareOptions options;
+  options.accels = args.accels;
+  options.structure = args.accel.options;
+  options.structure.wrap = parse_wrap_mode(args.accel.wrap);
+  options.threads = args.threads;
+  options.repeat = args.repeat;
+  options.rays.seed = args.seed;
+  options.brute_limit_seconds = args.brute_limit;
+  if (!args.quiet) options.on_progress = [](const std::string& line) { fmt::print(stderr, "compare: {}\n", line); };
+
+  LoadOptions load;
+  load.allow_outside_paths = args.allow_outside_paths;
+  const Scene scene = load_scene(args.scene, load);
+  for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
+  image_size(args, scene.settings, options.rays);
+
+  const CompareResult result = compare_accelerators(scene, options);
+  fmt::print("{}", format_compare_table(result, args.scene));
+  const std::string mismatches = format_mismatches(result);
+  if (!mismatches.empty()) fmt::print("\n{}", mismatches);
+  std::fflush(stdout);
+
+  if (!args.csv.empty()) write_text(args.csv, format_compare_csv(result));
+  if (!args.json.empty()) write_text(args.json, format_compare_json(result, args.scene));
+  if (!args.plot.empty()) write_compare_chart(result, args.scene, args.plot);
+  std::vector<std::string> written;
+  if (!args.heatmaps.empty()) written = write_compare_heatmaps(result, args.heatmaps);
+  if (!args.quiet) {
+    for (const std::string* path : {&args.csv, &args.json, &args.plot}) {
+      if (!path->empty()) fmt::print(stderr, "wrote {}\n", *path);
+    }
+    for (const std::string& path : written) fmt::print(stderr, "wrote {}\n", path);
+  }
+  if (!result.agreed()) {
+    fmt::print(stderr, "raylab: the structures disagree with {} (rays printed above)\n", result.reference);
+    return kDisagreementExit;
+  }
+  return 0;
+}
+
+}  // namespace
+
+CommandRunner add_compare_command(CLI::App& app) {
+  auto args = std::make_shared<CompareArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "compare",
+      "Build every acceleration structure for a scene, trace the same rays through each, and tabulate "
+      "build time, memory, Mrays/s, traversal work and agreement");
+  cmd->add_option("scene", args->scene, "Scene: a built-in name, an SPD generator (spd:balls) or a file")->required();
+  std::string names;
+  for (const std::string& n : args->accels) names += (names.empty() ? "" : ",") + n;
+  cmd->add_option("--accels", args->accels,
+                  "Structures to compare, comma-separated, in table order (default: " + names + ")")
+      ->delimiter(',')
+      ->check(CLI::IsMember(accelerator_choices()));
+  cmd->add_option("--width", args->width, "Primary rays per row (default 512)")->check(CLI::Range(1, 16384));
+  cmd->add_option("--height", args->height, "Rows of primary rays (default: from the scene's aspect ratio)")
+      ->check(CLI::Range(1, 16384));
+  cmd->add_option("--threads", args->threads, "Worker threads; 0 = all cores")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  cmd->add_option("--repeat", args->repeat, "Timed passes per ray kind; the median is reported")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the light samples and bounce directions")
+      ->check([](const std::string& v) { return v.starts_with('-') ? "the seed must not be negative" : ""; })
+      ->capture_default_str();
+  cmd->add_option("--brute-limit", args->brute_limit, "Skip brute force when its estimated time exceeds this (seconds)")
+      ->check(CLI::Range(0.0, 1e9))
+      ->capture_default_str();
+  add_accel_parameter_options(*cmd, args->accel);
+  cmd->add_option("--csv", args->csv, "Also write the table as CSV to this file");
+  cmd->add_option("--json", args->json, "Also write the table as JSON to this file");
+  cmd->add_option("--heatmaps", args->heatmaps,
+                  "Write DIR/<structure>-tests.png and -nodes.png: traversal cost per pixel of the primary rays, one "
+                  "colour scale for all structures (the folder is created if missing)");
+  cmd->add_option("--plot", args->plot, "Write an SVG chart of Mrays/s, build time and memory per structure");
+  cmd->add_flag("--allow-outside-paths", args->allow_outside_paths,
+                "Let a scene file reference files outside its own folder");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
+  return [args] { return run(*args); };
+}
+
+}  // namespace raylab::cli

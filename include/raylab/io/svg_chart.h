@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// SVG bar charts, written by hand (the format is text): used for the `raylab compare` plot.
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "raylab/render/accel_compare.h"
+
+namespace raylab {
+
+/// One panel of a grouped bar chart: a cluster of bars per group, one bar per series in each,
+/// on a linear axis from zero.
+struct BarPanel {
+  std::string title;                        ///< above the panel
+  std::string unit;                         ///< axis label
+  std::vector<std::string> groups;          ///< cluster labels (structures)
+  std::vector<std::string> series;          ///< bar labels, one colour each (ray kinds)
+  std::vector<std::vector<double>> values;  ///< values[group][series]; NaN or negative: no bar
+};
+
+/// An SVG document: `title`, then the panels stacked top to bottom, each with its axis, tick
+/// lines, a legend of its series and the value above each bar. Text is XML-escaped. Each bar
+/// is a `<rect class="bar">`.
+std::string bar_chart_svg(std::string_view title, std::span<const BarPanel> panels);
+
+/// The comparison as a chart: Mrays/s per structure and ray kind, then build time per
+/// structure. Skipped structures keep their place with no bars and "(skipped)" in the label.
+std::string compare_chart_svg(const CompareResult& result, const std::string& scene_name);
+
+/// Writes compare_chart_svg to `path` atomically.
+void write_compare_chart(const CompareResult& result, const std::string& scene_name, const std::string& path);
+
+/// `text` with &, <, >, " and ' replaced by entities.
+std::string xml_escape(std::string_view text);
+
+}  // namespace raylab
