@@ -287,6 +287,9 @@ std::string hit_text(const Hit& h) {
   return fmt::format("prim {} at t {:.9g} (u {:.6g}, v {:.6g})", h.prim_id, h.t, h.u, h.v);
 }
 
+// A rate with two decimals, or three significant digits when below one (brute force).
+std::string rate_text(double v) { return v >= 1.0 ? fmt::format("{:.2f}", v) : fmt::format("{:.3g}", v); }
+
 // `text` without spaces before its line breaks (centred and padded headers leave some).
 std::string trim_line_ends(const std::string& text) {
   std::string out;
@@ -411,7 +414,7 @@ std::string format_compare_table(const CompareResult& result, const std::string&
                     m.bytes_per_primitive));
     put("  ");
     for (const KindMeasure& k : m.kinds) {
-      put(k.rays ? fmt::format("{:>{}.2f}", k.mrays_per_second, kNumber) : fmt::format("{:>{}}", "-", kNumber));
+      put(fmt::format("{:>{}}", k.rays ? rate_text(k.mrays_per_second) : "-", kNumber));
     }
     for (const bool nodes : {true, false}) {
       put("  ");
