@@ -22,7 +22,7 @@ namespace raylab::cli {
 namespace {
 
 // Exit code when two structures disagree on some ray (after the table and the rays are printed).
-constexpr int kDisagreementExit = 3;
+constexpr int kDisagreementExit = 4;  // 3 is an internal error (main.cpp)
 // Width of the primary-ray image when none is given; the height follows the scene's aspect.
 constexpr int kDefaultWidth = 512;
 
