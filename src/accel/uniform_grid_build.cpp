@@ -1,1 +1,321 @@
-// PLACEHOLDER, being written.
+// Building the uniform grid: the resolution rule, the cell planes, the primitives' spatial order,
+// the two insertion passes (count the cells each primitive overlaps, then fill the reference
+// array), and the empty-space distances.
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include "grid_distance.h"
+#include "mailbox.h"
+#include "raylab/accel/uniform_grid.h"
+#include "raylab/core/error.h"
+#include "raylab/geometry/overlap.h"
+
+namespace raylab {
+namespace {
+
+// Cell boxes are enlarged before the overlap test, so that rounding in the traversal never skips
+// a primitive. The traversal hands each stretch [t_in, t_out] of the ray to one cell; the
+// exact ray point at those parameters can stray from the cell by the rounding of the boundary
+// parameters t_first + k * t_delta (a few ulps of the distance travelled) and, for the entry
+// cell, of the entry point's coordinates (an ulp of the coordinates). Where it strays into a
+// neighbour near an edge or corner, the walk may pass through that neighbour instead of the cell
+// the exact ray crosses, and a primitive touching only the latter would be missed. The margin
+// covers both sources:
+//  - kAbsMargin times the largest coordinate magnitude of the grid box: 2^-18 is 64 float ulps,
+//    enough for rays that travel up to ~20 scene sizes to their hit;
+//  - kRelMargin times the cell size, for the overlap tests' own rounding.
+// Both are far below a cell, so the extra references they add are few.
+constexpr float kRelMargin = 1e-4f;
+constexpr float kAbsMargin = 0x1p-18f;
+
+// Primitive references are 32-bit offsets; a grid needing more is rebuilt coarser.
+constexpr std::uint64_t kMaxReferences = std::numeric_limits<std::uint32_t>::max();
+
+// The range of cells on one axis whose enlarged boxes can touch [lo, hi] (inclusive); empty
+// (first > last) when none does.
+struct AxisRange {
+  int first, last;
+};
+
+AxisRange cells_touching(const std::vector<float>& planes, float inv_cell, float margin, float lo, float hi) {
+  const int n = static_cast<int>(planes.size()) - 1;
+  auto guess = [&](float x) {
+    const float f = (x - planes[0]) * inv_cell;
+    return f >= 0.f ? (f < float(n) ? static_cast<int>(f) : n - 1) : 0;  // NaN (a flat axis) -> 0
+  };
+  // first: the lowest cell whose upper face (enlarged) reaches lo.
+  int first = guess(lo - margin);
+  while (first > 0 && planes[first] + margin >= lo) --first;
+  while (first < n && planes[first + 1] + margin < lo) ++first;
+  // last: the highest cell whose lower face (enlarged) is at or below hi.
+  int last = guess(hi + margin);
+  while (last < n - 1 && planes[last + 1] - margin <= hi) ++last;
+  while (last >= 0 && planes[last] - margin > hi) --last;
+  return {first, last};
+}
+
+}  // namespace
+
+std::array<int, 3> grid_resolution(const Box3& box, std::size_t count, float density) {
+  std::array<int, 3> n{1, 1, 1};
+  if (count == 0 || box.empty() || !(density > 0.f)) return n;
+  const Vec3 e = box.extent();
+  const double target = double(density) * double(count);
+  bool free[3];
+  for (int a = 0; a < 3; ++a) free[a] = e[a] > 0.f && std::isfinite(e[a]);
+  // Solve the rule over the free axes; an axis that would get less than one cell is flat for
+  // this density: it gets one, and the others share the target again.
+  double r[3] = {1.0, 1.0, 1.0};
+  int k = 0;
+  for (;;) {
+    double volume = 1.0;
+    k = 0;
+    for (int a = 0; a < 3; ++a) {
+      if (free[a]) volume *= e[a], ++k;
+    }
+    if (k == 0) return n;
+    const double scale = std::pow(target / volume, 1.0 / k);
+    int thinnest = -1;
+    double smallest = 1.0;
+    for (int a = 0; a < 3; ++a) {
+      r[a] = free[a] ? double(e[a]) * scale : 1.0;
+      if (free[a] && r[a] < smallest) thinnest = a, smallest = r[a];
+    }
+    if (thinnest < 0) break;
+    free[thinnest] = false;
+  }
+  double cells = 1.0;
+  for (int a = 0; a < 3; ++a) cells *= std::max(1.0, std::round(r[a]));
+  const auto cap = static_cast<double>(kGridMaxCells);
+  if (cells > cap) {
+    // Scale the free axes down together, rounding down, then trim the largest until it fits.
+    double product = 1.0;
+    for (int a = 0; a < 3; ++a) product *= r[a];
+    const double shrink = std::pow(cap / product, 1.0 / k);
+    for (int a = 0; a < 3; ++a) n[a] = free[a] ? static_cast<int>(std::max(1.0, std::floor(r[a] * shrink))) : 1;
+    while (double(n[0]) * n[1] * n[2] > cap) {
+      const int a = int(std::max_element(n.begin(), n.end()) - n.begin());
+      n[a] = std::max(1, n[a] - std::max(1, n[a] / 64));
+    }
+    return n;
+  }
+  for (int a = 0; a < 3; ++a) n[a] = static_cast<int>(std::max(1.0, std::round(r[a])));
+  return n;
+}
+
+UniformGrid::UniformGrid(const Geometry& geometry, const GridConfig& config)
+    : UniformGrid(geometry, geometry.primitive_ids(), config) {}
+
+UniformGrid::UniformGrid(const Geometry& geometry, std::span<const std::uint32_t> ids, const GridConfig& config)
+    : UniformGrid(geometry, ids, {0, 0, 0}, config) {}
+
+UniformGrid::UniformGrid(const Geometry& geometry, std::span<const std::uint32_t> ids, std::array<int, 3> resolution,
+                         const GridConfig& config)
+    : m_geometry(geometry), m_config(config), m_ids(ids.begin(), ids.end()) {
+  if (!(config.density > 0.f) || !std::isfinite(config.density)) {
+    throw UsageError("grid density must be a positive number (got " + std::to_string(config.density) + ")");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  build(resolution);
+  m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+UniformGrid::~UniformGrid() = default;
+
+void UniformGrid::build(std::array<int, 3> resolution) {
+  // Ascending first, so that nothing below depends on the order `ids` came in (order_by_cell
+  // then makes the order spatial, ties by id).
+  std::sort(m_ids.begin(), m_ids.end());
+  m_triangle_count = static_cast<std::uint32_t>(m_geometry.triangles.size());
+  m_sphere_end = m_triangle_count + static_cast<std::uint32_t>(m_geometry.spheres.size());
+  for (std::uint32_t id : m_ids) m_bounds.extend(m_geometry.bounds(id));
+  if (m_ids.empty() || m_bounds.empty()) {
+    m_offsets.assign(1, 0u);  // no cells; traversal returns before looking at them
+    return;
+  }
+  const bool automatic = resolution[0] <= 0 || resolution[1] <= 0 || resolution[2] <= 0;
+  if (automatic) resolution = grid_resolution(m_bounds, m_ids.size(), m_config.density);
+  const Vec3 extent = m_bounds.extent();
+  for (int a = 0; a < 3; ++a) {
+    if (!(extent[a] > 0.f)) resolution[a] = 1;  // a flat axis: more cells would all be the same cell
+  }
+
+  float scale = 0.f;
+  for (int a = 0; a < 3; ++a) scale = std::max({scale, std::fabs(m_bounds.lo[a]), std::fabs(m_bounds.hi[a])});
+  const auto count = static_cast<std::uint32_t>(m_ids.size());
+
+  for (;;) {
+    // Plane positions, stored so that the build's cell boxes and the traversal's boundary
+    // distances use the very same floats. The last plane is the box's upper face exactly.
+    Vec3 margin;
+    for (int a = 0; a < 3; ++a) {
+      const int n = resolution[a];
+      const float cell = extent[a] / float(n);
+      m_cell[a] = cell;
+      m_inv_cell[a] = cell > 0.f ? float(n) / extent[a] : 0.f;
+      m_planes[a].resize(n + 1);
+      for (int i = 0; i < n; ++i) m_planes[a][i] = std::min(m_bounds.lo[a] + float(i) * cell, m_bounds.hi[a]);
+      m_planes[a][n] = m_bounds.hi[a];
+      margin[a] = kRelMargin * cell + kAbsMargin * scale;
+    }
+    const std::size_t nx = resolution[0], nxy = nx * std::size_t(resolution[1]);
+    const std::size_t cells = nxy * std::size_t(resolution[2]);
+    order_by_cell(resolution);
+
+    // Calls visit(cell index) for every cell that primitive `local` overlaps (enlarged boxes).
+    auto for_each_cell = [&](std::uint32_t local, auto&& visit) {
+      const std::uint32_t id = m_ids[local];
+      const Box3 b = m_geometry.bounds(id);
+      AxisRange range[3];
+      for (int a = 0; a < 3; ++a) {
+        // A NaN or empty box (a degenerate primitive) touches nothing: no ray can hit it.
+        if (!(b.lo[a] <= b.hi[a])) return;
+        range[a] = cells_touching(m_planes[a], m_inv_cell[a], margin[a], b.lo[a], b.hi[a]);
+        if (range[a].first > range[a].last) return;
+      }
+      // A primitive whose box lies in a single cell overlaps it: no test needed.
+      const bool single =
+          range[0].first == range[0].last && range[1].first == range[1].last && range[2].first == range[2].last;
+      for (int z = range[2].first; z <= range[2].last; ++z) {
+        for (int y = range[1].first; y <= range[1].last; ++y) {
+          for (int x = range[0].first; x <= range[0].last; ++x) {
+            if (!single) {
+              const Box3 cell{
+                  {m_planes[0][x] - margin.x, m_planes[1][y] - margin.y, m_planes[2][z] - margin.z},
+                  {m_planes[0][x + 1] + margin.x, m_planes[1][y + 1] + margin.y, m_planes[2][z + 1] + margin.z}};
+              if (!overlaps_box(m_geometry, id, cell)) continue;
+            }
+            visit(x + nx * y + nxy * z);
+          }
+        }
+      }
+    };
+
+    // Pass 1: how many references each cell gets (counted in m_offsets[c + 1]).
+    m_offsets.assign(cells + 1, 0u);
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, count, 64), [&](const auto& r) {
+      for (std::uint32_t i = r.begin(); i != r.end(); ++i) {
+        for_each_cell(i, [&](std::size_t c) {
+          std::atomic_ref<std::uint32_t>(m_offsets[c + 1]).fetch_add(1, std::memory_order_relaxed);
+        });
+      }
+    });
+    std::uint64_t total = 0;
+    for (std::size_t c = 1; c <= cells; ++c) {
+      total += m_offsets[c];
+      m_offsets[c] = static_cast<std::uint32_t>(std::min(total, kMaxReferences));
+    }
+    if (total > kMaxReferences) {
+      // Too many references for 32-bit offsets (huge primitives over a fine grid): halve.
+      if (resolution == std::array<int, 3>{1, 1, 1}) throw UsageError("uniform grid: too many primitive references");
+      for (int& n : resolution) n = std::max(1, n / 2);
+      continue;
+    }
+    m_resolution = resolution;
+
+    // Pass 2: each primitive claims slots in its cells, then each cell is sorted so that the
+    // result does not depend on thread scheduling.
+    m_refs.assign(total, 0u);
+    std::vector<std::uint32_t> cursor(m_offsets.begin(), m_offsets.end() - 1);
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, count, 64), [&](const auto& r) {
+      for (std::uint32_t i = r.begin(); i != r.end(); ++i) {
+        for_each_cell(i, [&](std::size_t c) {
+          m_refs[std::atomic_ref<std::uint32_t>(cursor[c]).fetch_add(1, std::memory_order_relaxed)] = i;
+        });
+      }
+    });
+    std::atomic<std::size_t> nonempty{0};
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells, 4096), [&](const auto& r) {
+      std::size_t local_nonempty = 0;
+      for (std::size_t c = r.begin(); c != r.end(); ++c) {
+        if (m_offsets[c] == m_offsets[c + 1]) continue;
+        ++local_nonempty;
+        std::sort(m_refs.begin() + m_offsets[c], m_refs.begin() + m_offsets[c + 1]);
+      }
+      nonempty += local_nonempty;
+    });
+    m_nonempty_cells = nonempty;
+    fill_skip_distances();
+    break;
+  }
+  // Copies of the triangles and spheres in the grid's own order, which is spatial: the
+  // references of one cell then point to neighbouring entries instead of all over the scene.
+  const bool any_triangle =
+      std::any_of(m_ids.begin(), m_ids.end(), [&](std::uint32_t id) { return id < m_triangle_count; });
+  const bool any_sphere = std::any_of(m_ids.begin(), m_ids.end(),
+                                      [&](std::uint32_t id) { return id >= m_triangle_count && id < m_sphere_end; });
+  m_triangles.assign(any_triangle ? count : 0, Triangle{});
+  m_spheres.assign(any_sphere ? count : 0, Sphere{});
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const std::uint32_t id = m_ids[i];
+    if (id < m_triangle_count)
+      m_triangles[i] = m_geometry.triangles[id];
+    else if (id < m_sphere_end)
+      m_spheres[i] = m_geometry.spheres[id - m_triangle_count];
+  }
+  if (m_config.mailbox) m_mailboxes = std::make_unique<Mailboxes>(count);
+}
+
+void UniformGrid::order_by_cell(std::array<int, 3> resolution) {
+  // Key: the cell holding the centre of the primitive's box (x fastest), then the id, so the
+  // order is deterministic.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(m_ids.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m_ids.size(), 1024), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      const Vec3 c = m_geometry.bounds(m_ids[i]).center();
+      std::uint64_t key = 0;
+      for (int a = 2; a >= 0; --a) {
+        const float f = (c[a] - m_bounds.lo[a]) * m_inv_cell[a];
+        const int cell = f >= 0.f ? (f < float(resolution[a]) ? int(f) : resolution[a] - 1) : 0;
+        key = key * std::uint64_t(resolution[a]) + std::uint64_t(cell);
+      }
+      keyed[i] = {key, m_ids[i]};
+    }
+  });
+  tbb::parallel_sort(keyed.begin(), keyed.end());
+  for (std::size_t i = 0; i < keyed.size(); ++i) m_ids[i] = keyed[i].second;
+}
+
+void UniformGrid::fill_skip_distances() {
+  // With skipping off, every empty cell gets distance 1: the walk never jumps.
+  m_skip = chessboard_distances(m_resolution, m_config.skip_empty ? kMaxSkip : 1,
+                                [&](std::size_t c) { return m_offsets[c] != m_offsets[c + 1]; });
+}
+
+std::vector<std::uint32_t> UniformGrid::cell_primitives(int x, int y, int z) const {
+  std::vector<std::uint32_t> out;
+  if (m_offsets.size() < 2) return out;  // an empty grid has no cells
+  const std::size_t c = x + std::size_t(m_resolution[0]) * (y + std::size_t(m_resolution[1]) * z);
+  for (std::uint32_t r = m_offsets[c]; r < m_offsets[c + 1]; ++r) out.push_back(m_ids[m_refs[r]]);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::size_t UniformGrid::mailbox_bytes_per_thread() const { return m_mailboxes ? m_mailboxes->bytes_per_thread() : 0; }
+
+AccelInfo UniformGrid::info() const {
+  AccelInfo info;
+  info.name = "grid";
+  info.build_seconds = m_build_seconds;
+  std::size_t planes = 0;
+  for (const auto& p : m_planes) planes += p.size();
+  info.memory_bytes = sizeof(*this) + (m_offsets.size() + m_refs.size() + m_ids.size()) * sizeof(std::uint32_t) +
+                      planes * sizeof(float) + m_skip.size() + m_triangles.size() * sizeof(Triangle) +
+                      m_spheres.size() * sizeof(Sphere);
+  info.node_count = m_offsets.size() - 1;
+  info.leaf_count = m_nonempty_cells;
+  info.primitive_count = m_ids.size();
+  info.max_depth = 0;
+  return info;
+}
+
+}  // namespace raylab
