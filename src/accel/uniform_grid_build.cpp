@@ -222,8 +222,10 @@ void UniformGrid::build(std::array<int, 3> resolution) {
     }
     m_resolution = resolution;
 
-    // Pass 2: each primitive claims slots in its cells, then each cell is sorted so that the
-    // result does not depend on thread scheduling.
+    // Pass 2: each primitive claims slots in its cells, then each cell is sorted by primitive id,
+    // so that the result does not depend on thread scheduling and any-hit queries meet a cell's
+    // primitives in id order, as brute force does (scene generators tend to emit big occluders
+    // first, which ends shadow rays sooner).
     m_refs.assign(total, 0u);
     std::vector<std::uint32_t> cursor(m_offsets.begin(), m_offsets.end() - 1);
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, count, 64), [&](const auto& r) {
@@ -239,7 +241,8 @@ void UniformGrid::build(std::array<int, 3> resolution) {
       for (std::size_t c = r.begin(); c != r.end(); ++c) {
         if (m_offsets[c] == m_offsets[c + 1]) continue;
         ++local_nonempty;
-        std::sort(m_refs.begin() + m_offsets[c], m_refs.begin() + m_offsets[c + 1]);
+        std::sort(m_refs.begin() + m_offsets[c], m_refs.begin() + m_offsets[c + 1],
+                  [&](std::uint32_t a, std::uint32_t b) { return m_ids[a] < m_ids[b]; });
       }
       nonempty += local_nonempty;
     });
