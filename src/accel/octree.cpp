@@ -1,22 +1,276 @@
+// The octree accelerator: parametric top-down traversal in ray order (Revelles, Urena & Lastra
+// 2000, "An efficient parametric algorithm for octree traversal"), iterative, with mailboxes.
+//
+// The ray's direction is mirrored so that every component is positive: axes where it is negative
+// (bit set in the octant mask `a`, -0 included) swap their near and far planes, and a child
+// numbered c in the mirrored frame is child c ^ a in memory. Per axis, a node's far plane is
+// crossed at t1 and its centre plane at tm; the ray is in the upper half of the node along an axis
+// once t > tm. Entering a node at parameter t, the first child is the one whose bit is set for
+// every axis with tm <= t; leaving a child through the nearest of its exit planes (tm where its
+// bit is clear, t1 where set), the next child sets the bits of the axes crossed there, or, when
+// one of them is already set, the ray leaves the parent too (Revelles' exit-plane table).
+//
+// Unlike the paper, tm is computed from the centre plane itself, (mid - origin) / direction, not
+// as (t0 + t1) / 2: the mean of two large opposite values (a ray nearly parallel to an axis's
+// planes) loses every digit of a small tm, and the mean of -inf and +inf (a zero direction
+// component) is NaN. Computed from the plane, each crossing is within a few ulps of its own
+// distance, zero components give infinities of the right sign (also for -0, whose reciprocal is
+// -inf), and the one NaN left, an origin exactly on a plane it runs parallel to, is given a side
+// (either is right: the build's margin puts what lies on the plane in both).
+
 #include "raylab/accel/octree.h"
 
-#include <stdexcept>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <optional>
 
-// PLACEHOLDER, being written.
+#include "mailbox.h"
+#include "traversal_common.h"
 
 namespace raylab {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+// A hit closer than the exit of the current cell ends the traversal, but only when it lies clearly
+// inside: a hit within this relative distance of the exit may be matched by a lower-id primitive
+// at the same distance that the next cell holds (the tie rule), or be a rounding away from a
+// closer hit there. Testing one more cell costs nothing measurable.
+constexpr float kExitSlack = 0x1p-16f;
+
+// The closest-hit limit beyond which no cell needs visiting.
+inline float visit_limit(float tmax) { return tmax + std::fabs(tmax) * kExitSlack; }
+
+inline float min3(float a, float b, float c) {
+  const float m = a < b ? a : b;
+  return m < c ? m : c;
+}
+inline float max3(float a, float b, float c) {
+  const float m = a > b ? a : b;
+  return m > c ? m : c;
+}
+
+// One interior node on the way down: its crossings and the child being visited. 48 bytes.
+// Crossings of its near planes are not kept: the traversal only needs where the ray is now.
+struct Frame {
+  float tm[3], t1[3];         // crossings of its middle and far planes, mirrored frame
+  float lo[3];                // its low corner on the lattice (integers, exact in float up to 2^24)
+  float half;                 // half its edge, in lattice steps
+  std::uint32_t first_child;  // index of its child 0
+  int child;                  // the child being visited, in the mirrored numbering
+};
+
+}  // namespace
 
 Octree::Octree(const Geometry& geometry, const OctreeConfig& config)
     : Octree(geometry, geometry.primitive_ids(), config) {}
-Octree::Octree(const Geometry&, std::span<const std::uint32_t>, const OctreeConfig&) {
-  throw std::logic_error("octree: not written yet");
+
+Octree::Octree(const Geometry& geometry, std::span<const std::uint32_t> ids, const OctreeConfig& config)
+    : m_geometry(geometry), m_config(config) {
+  const auto start = std::chrono::steady_clock::now();
+  m_config.max_items = std::max(m_config.max_items, 0);
+  m_config.max_depth = std::clamp(m_config.max_depth, 0, kOctreeDepthLimit);
+  m_tree = build_octree(geometry, ids, m_config);
+  m_mailboxes = std::make_unique<Mailboxes>(static_cast<std::uint32_t>(m_tree.ids.size()));
+  m_triangle_count = static_cast<std::uint32_t>(geometry.triangles.size());
+  m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
+
 Octree::~Octree() = default;
-Box3 Octree::bounds() const { return {}; }
-bool Octree::intersect(Ray&, Hit&) const { return false; }
-bool Octree::occluded(const Ray&) const { return false; }
-bool Octree::intersect_counted(Ray&, Hit&, TraversalStats&) const { return false; }
-bool Octree::occluded_counted(const Ray&, TraversalStats&) const { return false; }
-AccelInfo Octree::info() const { return {}; }
+
+template <bool kAnyHit, bool kCount>
+bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
+  std::uint64_t nodes_visited = 0, prim_tests = 0;
+  const float tmin = ray.tmin;
+  float tmax = ray.tmax;
+  Hit best = hit;
+  bool found = false;
+  if (m_tree.nodes.empty()) return finish_traversal<kCount>(false, tmax, best, 0, 0, ray, hit, stats);
+
+  const int octant = direction_octant(ray.direction);
+  const Vec3 o = ray.origin;
+  const Vec3 inv = safe_reciprocal(ray.direction);
+
+  const WatertightRay tri_ray(ray);
+  const OctreeNode* const nodes = m_tree.nodes.data();
+  const std::uint32_t* const refs = m_tree.refs.data();
+  const std::uint32_t* const ids = m_tree.ids.data();
+  const Triangle* const triangles = m_geometry.triangles.data();
+  const bool mailbox = m_config.mailbox;
+  std::optional<Mailboxes::RayStamp> stamp;  // a thread-local lookup per ray: only when mailboxing
+
+  // Tests the primitives of leaf `node` against the whole remaining ray (not just the cell's
+  // stretch of it), so a hit found here counts wherever it lies. True on an any-hit.
+  auto test_leaf = [&](const OctreeNode& node) {
+    const std::uint32_t end = node.first + node.count;
+    for (std::uint32_t r = node.first; r < end; ++r) {
+      const std::uint32_t index = refs[r];
+      if (mailbox && !stamp->first_visit(index)) continue;
+      const std::uint32_t id = ids[index];
+      if constexpr (kCount) ++prim_tests;
+      if (id < m_triangle_count) {
+        float t, u, v;
+        if (intersect_triangle(triangles[id], tri_ray, tmin, kAnyHit ? tmax : best.tie_limit(id, tmax), t, u, v)) {
+          found = true;
+          if constexpr (kAnyHit) return true;
+          tmax = t;
+          best = {t, id, u, v};
+        }
+      } else {
+        Ray probe = ray;
+        probe.tmin = tmin;
+        probe.tmax = tmax;
+        if constexpr (kAnyHit) {
+          if (m_geometry.occluded(id, tri_ray, probe)) return found = true;
+        } else if (m_geometry.intersect(id, tri_ray, probe, best)) {
+          found = true;
+          tmax = probe.tmax;
+        }
+      }
+    }
+    return false;
+  };
+
+  // Crossing of lattice plane `step` along axis i. Usually step * k + b, an affine function of
+  // the step that is monotonic like the planes themselves, so children never overlap or leave
+  // gaps along the ray; its rounding (a few ulps of the root's size and of the origin's distance)
+  // is what the build's margin covers. A zero or tiny direction component makes k or b infinite
+  // and that form inf - inf, so such rays compute (plane - origin) / direction instead, where
+  // 0 * inf (the origin in a plane it runs parallel to) picks a side: `if_on_plane`.
+  float k[3], b[3];
+  bool affine = true;
+  for (int i = 0; i < 3; ++i) {
+    k[i] = m_tree.root_size * 0x1p-24f * inv[i];
+    b[i] = (m_tree.root_lo[i] - o[i]) * inv[i];
+    affine = affine && std::isfinite(k[i]) && std::isfinite(b[i]);
+  }
+  auto crossing = [&](int i, float step, float if_on_plane) {
+    if (affine) return step * k[i] + b[i];
+    const float t = (m_tree.plane(i, static_cast<std::uint32_t>(step)) - o[i]) * inv[i];
+    return std::isnan(t) ? if_on_plane : t;
+  };
+
+  // The root: an origin in a face plane counts as inside (the root is larger than the
+  // primitives, so nothing can be lost either way).
+  Frame stack[kOctreeDepthLimit];
+  Frame* f = stack;
+  constexpr float kRootSteps = static_cast<float>(kOctreeLatticeSteps);
+  float t_enter = -kInf;
+  for (int i = 0; i < 3; ++i) {
+    const bool mirrored = (octant >> i) & 1;
+    t_enter = std::fmax(t_enter, crossing(i, mirrored ? kRootSteps : 0.f, -kInf));
+    f->t1[i] = crossing(i, mirrored ? 0.f : kRootSteps, kInf);
+    f->lo[i] = 0.f;
+  }
+  const float t_leave = min3(f->t1[0], f->t1[1], f->t1[2]);
+  const float limit = visit_limit(tmax);
+  // Where the ray is now: it enters each cell at the parameter it left the previous one.
+  float t_cur = t_enter > tmin ? t_enter : tmin;
+  if (!(t_cur <= (t_leave < limit ? t_leave : limit))) {
+    return finish_traversal<kCount>(false, tmax, best, 0, 0, ray, hit, stats);
+  }
+  if (mailbox) stamp.emplace(m_mailboxes->begin_ray());
+  if constexpr (kCount) ++nodes_visited;
+  if (nodes[0].is_leaf()) {
+    test_leaf(nodes[0]);
+    return finish_traversal<kCount>(found, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
+  }
+
+  // Completes frame `g` for interior node `node` (its far crossings and lattice corner are set):
+  // the middle crossings, and the child holding the ray at t_cur. A ray in a centre plane and
+  // parallel to it may take either half (the margin put what lies on the plane in both); it
+  // takes the lower one of the mirrored frame.
+  auto open = [&](Frame& g, const OctreeNode& node, float size) {
+    g.first_child = node.first;
+    g.half = 0.5f * size;
+    for (int i = 0; i < 3; ++i) g.tm[i] = crossing(i, g.lo[i] + g.half, kInf);
+    g.child = (g.tm[0] <= t_cur ? 1 : 0) | (g.tm[1] <= t_cur ? 2 : 0) | (g.tm[2] <= t_cur ? 4 : 0);
+  };
+  open(*f, nodes[0], kRootSteps);
+
+  for (;;) {
+    // Visit the current child of the innermost open node.
+    const int actual = f->child ^ octant;
+    const OctreeNode node = nodes[f->first_child + static_cast<std::uint32_t>(actual)];
+    if constexpr (kCount) ++nodes_visited;
+    if (!node.is_leaf()) {
+      Frame& g = f[1];
+      for (int i = 0; i < 3; ++i) {
+        g.t1[i] = ((f->child >> i) & 1) ? f->t1[i] : f->tm[i];
+        g.lo[i] = f->lo[i] + (((actual >> i) & 1) ? f->half : 0.f);
+      }
+      open(g, node, f->half);
+      ++f;
+      continue;
+    }
+    if (node.count != 0 && test_leaf(node)) {
+      return finish_traversal<kCount>(true, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
+    }
+
+    // Step to the next cell along the ray: leave the current child through its nearest exit
+    // plane; a child already in the upper half along that axis leaves its parent too.
+    for (;;) {
+      const int c = f->child;
+      const float ex = (c & 1) ? f->t1[0] : f->tm[0];
+      const float ey = (c & 2) ? f->t1[1] : f->tm[1];
+      const float ez = (c & 4) ? f->t1[2] : f->tm[2];
+      const float t_exit = min3(ex, ey, ez);
+      // Cells beyond the closest hit cannot hold a closer one; an exit at infinity means the ray
+      // never leaves (a zero direction).
+      if (!(t_exit <= visit_limit(tmax)) || t_exit == kInf) {
+        return finish_traversal<kCount>(found, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
+      }
+      // Every axis that reaches the exit at once (a ray through an edge or a corner).
+      const int crossed = (ex == t_exit ? 1 : 0) | (ey == t_exit ? 2 : 0) | (ez == t_exit ? 4 : 0);
+      if ((crossed & c) == 0) {
+        f->child = c | crossed;
+        t_cur = t_exit;
+        // Empty leaves hold nothing to test: step on through them without a visit of their own.
+        if (const OctreeNode& next = nodes[f->first_child + static_cast<std::uint32_t>(f->child ^ octant)];
+            next.count == 0) {
+          if constexpr (kCount) ++nodes_visited;
+          continue;
+        }
+        break;
+      }
+      if (f == stack) return finish_traversal<kCount>(found, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
+      --f;
+    }
+  }
+}
+
+bool Octree::intersect(Ray& ray, Hit& hit) const { return traverse<false, false>(ray, hit, nullptr); }
+
+bool Octree::occluded(const Ray& ray) const {
+  Ray probe = ray;
+  Hit scratch;
+  return traverse<true, false>(probe, scratch, nullptr);
+}
+
+bool Octree::intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const {
+  return traverse<false, true>(ray, hit, &stats);
+}
+
+bool Octree::occluded_counted(const Ray& ray, TraversalStats& stats) const {
+  Ray probe = ray;
+  Hit scratch;
+  return traverse<true, true>(probe, scratch, &stats);
+}
+
+AccelInfo Octree::info() const {
+  AccelInfo info;
+  info.name = "octree";
+  info.build_seconds = m_build_seconds;
+  info.memory_bytes = m_tree.nodes.capacity() * sizeof(OctreeNode) +
+                      (m_tree.refs.capacity() + m_tree.ids.capacity()) * sizeof(std::uint32_t) +
+                      m_mailboxes->bytes_per_thread();
+  info.node_count = m_tree.nodes.size();
+  info.leaf_count = m_tree.leaf_count;
+  info.primitive_count = m_tree.ids.size();
+  info.max_depth = m_tree.max_depth;
+  return info;
+}
 
 }  // namespace raylab
