@@ -554,11 +554,11 @@ TEST(OctreeAdversarial, TeapotInAStadium) {
   const Geometry g = teapot_in_stadium();
   Sampler s(17);
   const Octree octree(g);
-  std::vector<Ray> rays = random_rays(g, s, 1000);
-  const Camera camera(teapot_in_stadium_camera(), 48, 32);
-  for (int y = 0; y < 32; ++y)
-    for (int x = 0; x < 48; ++x) rays.push_back(camera.generate(float(x) + 0.5f, float(y) + 0.5f));
-  for (int i = 0; i < 500; ++i) {  // at the teapot from nearby
+  std::vector<Ray> rays = random_rays(g, s, 600);
+  const Camera camera(teapot_in_stadium_camera(), 32, 24);
+  for (int y = 0; y < 24; ++y)
+    for (int x = 0; x < 32; ++x) rays.push_back(camera.generate(float(x) + 0.5f, float(y) + 0.5f));
+  for (int i = 0; i < 300; ++i) {  // at the teapot from nearby
     const Vec3 o = s.in_box({-3.f, -3.f, 0.f}, {3.f, 3.f, 3.f});
     rays.push_back({o, 0.f, point_on(g, s.rng.next_u32() % 2256, s) - o});
   }
