@@ -87,13 +87,19 @@ Ray to_local(const Instance& inst, const Ray& ray) {
   return local;
 }
 
+// Adds a sub-structure's traversal work to the sink; its `hits` stay out, since the query that
+// reached the group counts its own.
+void add_inner_work(const TraversalStats& inner) {
+  t_count_sink->nodes_visited += inner.nodes_visited;
+  t_count_sink->prim_tests += inner.prim_tests;
+  t_count_sink->volume_tests += inner.volume_tests;
+}
+
 bool sub_intersect(const Accelerator& accel, Ray& ray, Hit& hit) {
   if (t_count_sink == nullptr) return accel.intersect(ray, hit);
   TraversalStats inner;
   const bool found = accel.intersect_counted(ray, hit, inner);
-  t_count_sink->nodes_visited += inner.nodes_visited;
-  t_count_sink->prim_tests += inner.prim_tests;
-  t_count_sink->volume_tests += inner.volume_tests;
+  add_inner_work(inner);
   return found;
 }
 
@@ -101,9 +107,7 @@ bool sub_occluded(const Accelerator& accel, const Ray& ray) {
   if (t_count_sink == nullptr) return accel.occluded(ray);
   TraversalStats inner;
   const bool found = accel.occluded_counted(ray, inner);
-  t_count_sink->nodes_visited += inner.nodes_visited;
-  t_count_sink->prim_tests += inner.prim_tests;
-  t_count_sink->volume_tests += inner.volume_tests;
+  add_inner_work(inner);
   return found;
 }
 

@@ -96,19 +96,18 @@ std::size_t bytes_of(const std::vector<T>& v) {
   return v.capacity() * sizeof(T);
 }
 
+// Bytes held by a geometry's arrays.
+std::size_t geometry_bytes(const Geometry& g) {
+  return bytes_of(g.triangles) + bytes_of(g.spheres) + bytes_of(g.cylinders) + bytes_of(g.disks) + bytes_of(g.quads) +
+         bytes_of(g.triangle_objects) + bytes_of(g.sphere_objects) + bytes_of(g.cylinder_objects) +
+         bytes_of(g.disk_objects) + bytes_of(g.quad_objects) + bytes_of(g.triangle_normals) + bytes_of(g.triangle_uvs);
+}
+
 }  // namespace
 
 std::size_t Scene::memory_bytes() const {
-  const Geometry& g = geometry;
-  std::size_t n = bytes_of(g.triangles) + bytes_of(g.spheres) + bytes_of(g.cylinders) + bytes_of(g.disks) +
-                  bytes_of(g.quads) + bytes_of(g.triangle_objects) + bytes_of(g.sphere_objects) +
-                  bytes_of(g.cylinder_objects) + bytes_of(g.disk_objects) + bytes_of(g.quad_objects) +
-                  bytes_of(g.triangle_normals) + bytes_of(g.triangle_uvs);
-  for (const Geometry& p : prototypes) {
-    n += bytes_of(p.triangles) + bytes_of(p.spheres) + bytes_of(p.cylinders) + bytes_of(p.disks) + bytes_of(p.quads) +
-         bytes_of(p.triangle_objects) + bytes_of(p.sphere_objects) + bytes_of(p.cylinder_objects) +
-         bytes_of(p.disk_objects) + bytes_of(p.quad_objects) + bytes_of(p.triangle_normals) + bytes_of(p.triangle_uvs);
-  }
+  std::size_t n = geometry_bytes(geometry);
+  for (const Geometry& p : prototypes) n += geometry_bytes(p);
   n += bytes_of(instances);
   n += bytes_of(objects) + bytes_of(materials) + bytes_of(lights);
   for (const SceneObject& o : objects) n += o.name.capacity();

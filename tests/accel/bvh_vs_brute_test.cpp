@@ -68,19 +68,12 @@ TEST_P(BvhPacket, GroupQueriesEqualSingleRays) {
   for (std::size_t i = 0; i < shadow.size(); ++i) EXPECT_EQ(occ[i], bvh->occluded(shadow[i]) ? 1 : 0) << "ray " << i;
 }
 
+// The queries on one primitive are checked for every structure (AccelVsBrute.OnePrimitive);
+// here, the tree's own shape: one leaf (the binary tree's shape is checked in bvh_tree_test.cpp).
 TEST_P(BvhEdgeCases, SinglePrimitive) {
   Geometry g;
   g.add(Sphere{{0.f, 0.f, 5.f}, 1.f}, 3);
-  const auto bvh = make(g);
-  EXPECT_EQ(bvh->info().leaf_count, 1u);  // the binary tree's shape is checked in bvh_tree_test.cpp
-  Ray ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, 1.f}};
-  Hit hit;
-  ASSERT_TRUE(bvh->intersect(ray, hit));
-  EXPECT_FLOAT_EQ(hit.t, 4.f);
-  EXPECT_EQ(hit.prim_id, 0u);
-  EXPECT_TRUE(bvh->occluded(Ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, 1.f}, 4.5f}));
-  EXPECT_FALSE(bvh->occluded(Ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, 1.f}, 3.5f}));
-  EXPECT_FALSE(bvh->occluded(Ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, -1.f}}));
+  EXPECT_EQ(make(g)->info().leaf_count, 1u);
 }
 
 std::string param_name(const ::testing::TestParamInfo<std::string>& info) { return info.param; }

@@ -575,20 +575,16 @@ TEST(OctreeAdversarial, TeapotInAStadium) {
 // ---------------------------------------------------------------------------------------------
 // Contract details
 
+// The queries on empty geometry are checked for every structure in accel_vs_brute_test.cpp;
+// here, what is the octree's own: no nodes, no work.
 TEST(Octree, EmptyGeometry) {
   const Geometry g;
   const Octree octree(g);
   Ray ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, 1.f}};
   Hit hit;
   TraversalStats st;
-  EXPECT_FALSE(octree.intersect(ray, hit));
   EXPECT_FALSE(octree.intersect_counted(ray, hit, st));
-  EXPECT_FALSE(octree.occluded(ray));
   EXPECT_FALSE(octree.occluded_counted(ray, st));
-  EXPECT_FALSE(hit.valid());
-  EXPECT_EQ(ray.tmax, kInf);
-  EXPECT_TRUE(octree.bounds().empty());
-  EXPECT_EQ(octree.info().primitive_count, 0u);
   EXPECT_EQ(octree.info().node_count, 0u);
   EXPECT_EQ(st.prim_tests, 0u);
 }

@@ -357,6 +357,8 @@ TEST(GridAdversarial, AllPrimitivesInOneCell) {
   }
 }
 
+// The queries on empty geometry are checked for every structure in accel_vs_brute_test.cpp;
+// here, what is the grid's own: an empty id list, no cells, no work.
 TEST(GridAdversarial, EmptyGeometry) {
   const Geometry g;
   const std::vector<std::uint32_t> none;
@@ -364,13 +366,9 @@ TEST(GridAdversarial, EmptyGeometry) {
   Ray ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, 1.f}};
   Hit hit;
   TraversalStats st;
-  EXPECT_FALSE(grid.intersect(ray, hit));
   EXPECT_FALSE(grid.intersect_counted(ray, hit, st));
-  EXPECT_FALSE(grid.occluded(ray));
   EXPECT_FALSE(grid.occluded_counted(ray, st));
-  EXPECT_FALSE(hit.valid());
   EXPECT_TRUE(grid.bounds().empty());
-  EXPECT_EQ(grid.info().primitive_count, 0u);
   EXPECT_EQ(grid.info().node_count, 0u);
   EXPECT_EQ(st.nodes_visited + st.prim_tests, 0u);
 }
