@@ -27,4 +27,8 @@ CommandRunner add_convert_command(CLI::App& app);
 /// exits 3 when two structures disagree on some ray.
 CommandRunner add_compare_command(CLI::App& app);
 
+/// `raylab quality SCENE [--reference REF|auto] [--budgets ...]`: every sampler at every budget
+/// against a reference image, side by side.
+CommandRunner add_quality_command(CLI::App& app);
+
 }  // namespace raylab::cli

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "raylab/core/srgb.h"  // linear_to_srgb, srgb_to_linear (moved to core; kept visible here)
 #include "raylab/render/film.h"
 
 namespace raylab {
@@ -23,12 +24,6 @@ void write_image(const Film& film, const std::string& path);
 
 /// Encodes `film` as bytes of the format named by `extension` (".png", ".pfm", ".exr").
 std::vector<unsigned char> encode_image(const Film& film, std::string_view extension);
-
-/// Linear to sRGB-encoded value in [0, 1] (clamped).
-float linear_to_srgb(float linear);
-
-/// sRGB-encoded value in [0, 1] to linear.
-float srgb_to_linear(float encoded);
 
 /// Reads a PNG (decoded to linear), PFM or EXR file into a film; throws InputError on failure.
 Film read_image(const std::string& path);

@@ -2,7 +2,10 @@
 /// \file
 /// The tile-parallel render loop.
 
+#include <cstdint>
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "raylab/accel/accelerator.h"
 #include "raylab/core/stats.h"
@@ -25,6 +28,14 @@ struct RenderOptions {
 struct RenderResult {
   RenderStats stats;
   double seconds = 0.0;  ///< wall-clock time of the pixel loop
+  /// Primary rays traced (= stats.rays[primary]; adaptive samplers trace a varying number).
+  std::uint64_t primary_rays = 0;
+  /// Sample positions whose colour went into each pixel (row-major, width * height). For the
+  /// uniform samplers this is spp everywhere; adaptive samplers vary it (corner rays shared by
+  /// neighbouring pixels count in each).
+  std::vector<std::uint32_t> samples_per_pixel;
+  /// Notices for the user (an --spp rounded to what the sampler can use), one line each.
+  std::vector<std::string> notices;
 };
 
 /// Renders `scene` with `accel` into `film` (which must match the settings' size). The image is

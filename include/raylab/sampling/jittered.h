@@ -4,13 +4,9 @@
 
 #include <cstdint>
 
-namespace raylab {
+#include "raylab/sampling/pixel_sampler.h"
 
-/// A 2D sample position inside the unit square.
-struct Sample2 {
-  float x = 0.5f;
-  float y = 0.5f;
-};
+namespace raylab {
 
 /// Jittered sampling: `spp` samples laid on the most nearly square nx * ny grid with
 /// nx * ny == spp (a 1 x spp strip for primes), one uniformly random sample per stratum.
