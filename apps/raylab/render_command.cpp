@@ -16,9 +16,12 @@
 #include "raylab/io/atomic_file.h"
 #include "raylab/io/image_io.h"
 #include "raylab/io/scene_loader.h"
+#include "raylab/render/adaptive.h"
 #include "raylab/render/progress.h"
 #include "raylab/render/renderer.h"
 #include "raylab/render/spd_protocol.h"
+#include "raylab/sampling/filter.h"
+#include "raylab/sampling/pixel_sampler.h"
 #include "raylab/scene/builtin_scenes.h"
 #include "raylab/scene/spd.h"
 
@@ -30,6 +33,10 @@ struct RenderArgs {
   std::string output = "render.png";
   std::optional<int> width, height, spp, max_depth;
   std::optional<std::uint64_t> seed;
+  std::optional<std::string> sampler, filter;
+  std::optional<float> filter_radius, aa_threshold;
+  std::optional<int> aa_depth;
+  std::vector<std::string> aovs;
   std::string accel = "bvh";
   AccelArgs structure;
   int threads = 0;
@@ -89,6 +96,18 @@ void print_protocol_counts(const SpdProtocolCounts& c) {
   fmt::print("{:<20}{:>14}{:>14}\n", "secondary", c.secondary, c.secondary_hits);
 }
 
+std::vector<std::string> sampler_choices() {
+  std::vector<std::string> names{"auto"};
+  for (auto n : pixel_sampler_names()) names.emplace_back(n);
+  for (auto n : adaptive_sampler_names()) names.emplace_back(n);
+  return names;
+}
+
+// The image, and the sample-count outputs asked for by --aov samples.
+void write_outputs(const RenderArgs& args, const Film& film, const RenderResult& result) {
+  write_image(film, args.output);
+}
+
 int run(const RenderArgs& args) {
   if (args.list_scenes) {
     list_scenes();
@@ -109,6 +128,21 @@ int run(const RenderArgs& args) {
   if (args.spp) s.spp = *args.spp;
   if (args.max_depth) s.max_depth = *args.max_depth;
   if (args.seed) s.seed = *args.seed;
+  if (args.sampler) s.sampler = *args.sampler;
+  if (args.filter) s.filter = *args.filter;
+  if (args.filter_radius) s.filter_radius = *args.filter_radius;
+  if (args.aa_threshold) s.aa_threshold = *args.aa_threshold;
+  if (args.aa_depth) s.aa_depth = *args.aa_depth;
+  const std::string sampler = resolve_sampler_name(s);
+  if ((args.aa_threshold || args.aa_depth) && !is_adaptive_sampler(sampler)) {
+    throw UsageError("--aa-threshold and --aa-depth apply to the adaptive samplers (--sampler adaptive or "
+                     "adaptive-corners), not to " + sampler);
+  }
+  if (is_adaptive_sampler(sampler) && s.filter != "box") {
+    throw UsageError("the adaptive samplers weight samples by area within the pixel (a box filter); --filter " +
+                     s.filter + " applies to the uniform samplers");
+  }
+  (void)make_filter(s.filter, s.filter_radius);  // usage errors before any work
 
   SceneAccelOptions structure = args.structure.options;
   structure.top = args.accel;
@@ -137,14 +171,21 @@ int run(const RenderArgs& args) {
   if (bar) options.on_progress = [&bar](int done, int total) { bar->update(done, total); };
   const RenderResult result = render(scene, *accel, film, options);
   const double mrays = result.seconds > 0 ? result.stats.total_rays() / result.seconds * 1e-6 : 0.0;
+  const double pixels = static_cast<double>(s.width) * s.height;
+  const std::string sampling =
+      is_adaptive_sampler(sampler)
+          ? fmt::format("{}, {:.2f} primary rays per pixel", sampler, static_cast<double>(result.primary_rays) / pixels)
+          : fmt::format("{} spp {}", result.samples_per_pixel.empty() ? s.spp : int(result.samples_per_pixel[0]),
+                        sampler);
   if (bar)
-    bar->finish(fmt::format("{}x{}, {} spp, {} rays ({:.2f} Mrays/s)", s.width, s.height, s.spp,
+    bar->finish(fmt::format("{}x{}, {}, {} rays ({:.2f} Mrays/s)", s.width, s.height, sampling,
                             result.stats.total_rays(), mrays));
-  write_image(film, args.output);
+  for (const std::string& n : result.notices) fmt::print(stderr, "note: {}\n", n);
+  write_outputs(args, film, result);
   if (args.stats) print_stats(result.stats, accel->info(), result.seconds);
   if (!args.quiet) {
-    fmt::print("wrote {} ({}x{}, {} spp, --accel {}) in {}\n", args.output, s.width, s.height, s.spp, args.accel,
-               ProgressBar::format_duration(result.seconds));
+    fmt::print("wrote {} ({}x{}, {}, {} primary rays, --accel {}) in {}\n", args.output, s.width, s.height, sampling,
+               result.primary_rays, args.accel, ProgressBar::format_duration(result.seconds));
   }
   return 0;
 }
@@ -162,7 +203,30 @@ CommandRunner add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--width", args->width, "Image width in pixels")->check(CLI::Range(1, 32768));
   cmd->add_option("--height", args->height, "Image height in pixels")->check(CLI::Range(1, 32768));
-  cmd->add_option("--spp", args->spp, "Samples per pixel (jittered, box filter)")->check(CLI::Range(1, 1 << 16));
+  cmd->add_option("--spp", args->spp,
+                  "Samples per pixel; a count the sampler cannot use is rounded with a notice. Adaptive "
+                  "samplers: the most samples a pixel may get (sets --aa-depth to ceil(log4 spp))")
+      ->check(CLI::Range(1, 1 << 16));
+  cmd->add_option("--sampler", args->sampler,
+                  "Sample placement: auto (center at 1 spp, else jittered), center, regular, random, jittered, "
+                  "cmj, sobol, adaptive-corners, adaptive")
+      ->check(CLI::IsMember(sampler_choices()));
+  cmd->add_option("--filter", args->filter, "Reconstruction filter: box (default), tent, gaussian, mitchell")
+      ->check(CLI::IsMember(std::vector<std::string>(filter_names().begin(), filter_names().end())));
+  cmd->add_option("--filter-radius", args->filter_radius,
+                  "Filter half-width in pixels (default: box 0.5, tent 1, gaussian 1.5, mitchell 2)")
+      ->check(CLI::Range(0.5f, 8.f));
+  cmd->add_option("--aa-threshold", args->aa_threshold,
+                  "Adaptive samplers: display-encoded colour difference that triggers refinement (default 0.1)")
+      ->check(CLI::Range(0.f, 1.f));
+  cmd->add_option("--aa-depth", args->aa_depth,
+                  "Adaptive samplers: most subdivision levels (a pixel holds at most 4^depth cells)")
+      ->check(CLI::Range(0, 8));
+  cmd->add_option("--aov", args->aovs,
+                  "Extra outputs: 'samples' writes the primary samples per pixel as an EXR layer (into an .exr "
+                  "output, else OUTPUT.samples.exr) and a false-colour OUTPUT.samples.png")
+      ->check(CLI::IsMember({"samples"}))
+      ->delimiter(',');
   cmd->add_option("--accel", args->accel, "Acceleration structure")
       ->check(CLI::IsMember(accelerator_choices()))
       ->capture_default_str();

@@ -116,7 +116,8 @@ bool WhittedIntegrator::refract(Vec3 d, Vec3 n, float eta, Vec3& out) {
   return true;
 }
 
-Color WhittedIntegrator::trace(const TraceContext& ctx, Ray ray, int depth, RayKind kind, Pcg32& rng) {
+Color WhittedIntegrator::trace(const TraceContext& ctx, Ray ray, int depth, RayKind kind, Pcg32& rng,
+                               PrimaryFeature* feature) {
   Hit hit;
   const bool found =
       ctx.count_traversal ? ctx.accel.intersect_counted(ray, hit, ctx.stats.traversal) : ctx.accel.intersect(ray, hit);
@@ -131,6 +132,10 @@ Color WhittedIntegrator::trace(const TraceContext& ctx, Ray ray, int depth, RayK
   const Vec3 ng = si.geometric_normal;
   const Vec3 view = -d;
   const Color base = diffuse_color(m, si.u, si.v);
+  if (feature) {
+    feature->object = static_cast<std::int32_t>(si.object_id);
+    feature->normal = n;
+  }
 
   Color result = m.emission + scene.settings.ambient * base * m.kd;
   for (const Light& light : scene.lights) result += shade_light(ctx, light, m, base, si.position, n, ng, view, rng);

@@ -38,8 +38,15 @@ struct RenderResult {
   std::vector<std::string> notices;
 };
 
+/// The sampler a render with `settings` uses: settings.sampler, with "auto" resolved (center at
+/// 1 sample per pixel, jittered above).
+std::string resolve_sampler_name(const RenderSettings& settings);
+
 /// Renders `scene` with `accel` into `film` (which must match the settings' size). The image is
 /// the same for any thread count and tile order: every sample is seeded by its pixel and index.
+/// The sampler, filter and adaptive parameters come from scene.settings; unknown names and
+/// unsupported combinations (an adaptive sampler with a filter other than the pixel box) throw
+/// UsageError.
 RenderResult render(const Scene& scene, const Accelerator& accel, Film& film, const RenderOptions& options = {});
 
 }  // namespace raylab

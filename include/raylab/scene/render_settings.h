@@ -14,7 +14,7 @@ struct RenderSettings {
   int width = 640;                   ///< image width in pixels
   int height = 480;                  ///< image height in pixels
   int spp = 1;                       ///< samples per pixel (adaptive samplers: the most per pixel)
-  std::string sampler = "jittered";  ///< pixel sample placement (see --sampler)
+  std::string sampler = "auto";      ///< pixel sample placement (see --sampler); auto: center at 1 spp, else jittered
   std::string filter = "box";        ///< reconstruction filter (see --filter)
   float filter_radius = 0.f;         ///< filter half-width in pixels; 0 = the filter's default
   float aa_threshold = -1.f;         ///< adaptive samplers: contrast that triggers refinement; < 0 = default

@@ -1,0 +1,91 @@
+#pragma once
+// Internal to the render module: the parallel machinery every pixel-loop policy shares (uniform
+// samplers, adaptive-corners, adaptive): a thread arena of the requested size, one statistics
+// record per thread, and the tile grid.
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+
+#include "raylab/core/rng.h"
+#include "raylab/render/camera.h"
+#include "raylab/render/renderer.h"
+#include "raylab/render/whitted.h"
+
+namespace raylab::detail {
+
+/// A rectangle of pixels [x0, x1) x [y0, y1).
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+/// The image cut into square tiles, numbered row-major from the top-left.
+class TileGrid {
+ public:
+  /// Tiles of `tile` pixels (at least 1) over a `width` x `height` image.
+  TileGrid(int width, int height, int tile)
+      : m_width(width), m_height(height), m_tile(std::max(1, tile)),
+        m_tiles_x((width + m_tile - 1) / m_tile), m_tiles_y((height + m_tile - 1) / m_tile) {}
+
+  /// Number of tiles.
+  int count() const { return m_tiles_x * m_tiles_y; }
+  /// Pixels of tile `t`.
+  PixelRect rect(int t) const {
+    const int x0 = (t % m_tiles_x) * m_tile;
+    const int y0 = (t / m_tiles_x) * m_tile;
+    return {x0, y0, std::min(x0 + m_tile, m_width), std::min(y0 + m_tile, m_height)};
+  }
+  /// Tile side in pixels.
+  int tile() const { return m_tile; }
+
+ private:
+  int m_width, m_height, m_tile, m_tiles_x, m_tiles_y;
+};
+
+/// Runs work items in parallel, each with a TraceContext whose statistics belong to the worker
+/// thread, so no counter is shared. Results must not depend on which thread runs an item.
+class RenderWorkers {
+ public:
+  /// Workers for `scene` traced through `accel`, as many threads as `options` asks.
+  RenderWorkers(const Scene& scene, const Accelerator& accel, const RenderOptions& options)
+      : m_scene(scene), m_accel(accel), m_count(options.count_traversal),
+        m_arena(options.threads > 0 ? options.threads : tbb::info::default_concurrency()) {}
+
+  /// Calls `fn(index, ctx)` for every index in [0, count), in parallel, one index per task.
+  template <class Fn>
+  void for_each(int count, Fn&& fn) {
+    m_arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<int>(0, count, 1), [&](const tbb::blocked_range<int>& range) {
+        const TraceContext ctx{m_scene, m_accel, m_stats.local(), m_count};
+        for (int i = range.begin(); i != range.end(); ++i) fn(i, ctx);
+      });
+    });
+  }
+
+  /// The statistics of every thread, summed.
+  RenderStats merged_stats() {
+    RenderStats total;
+    for (const RenderStats& s : m_stats) total += s;
+    return total;
+  }
+
+ private:
+  const Scene& m_scene;
+  const Accelerator& m_accel;
+  bool m_count;
+  tbb::task_arena m_arena;
+  tbb::enumerable_thread_specific<RenderStats> m_stats;
+};
+
+/// The radiance of the primary ray through image position (x, y), with every random choice along
+/// it seeded by `path_seed`; `feature` (optional) receives what the ray hit first.
+inline Color trace_image_position(const TraceContext& ctx, const Camera& camera, float x, float y,
+                                  std::uint64_t path_seed, PrimaryFeature* feature = nullptr) {
+  Pcg32 rng(path_seed);
+  return WhittedIntegrator::trace(ctx, camera.generate(x, y), 1, RayKind::kPrimary, rng, feature);
+}
+
+}  // namespace raylab::detail
