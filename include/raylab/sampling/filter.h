@@ -22,7 +22,8 @@ enum class FilterKind { kBox, kTent, kGaussian, kMitchell };
 ///    it has negative lobes.
 class Filter {
  public:
-  /// A filter of kind `kind` and radius `radius` (> 0; pixels).
+  /// A filter of kind `kind` and radius `radius` (> 0 and finite; pixels). Throws UsageError
+  /// for any other radius.
   Filter(FilterKind kind, float radius);
 
   /// The filter's weight for a sample at offset (dx, dy) pixels from the pixel centre.
@@ -50,7 +51,7 @@ std::span<const std::string_view> filter_names();
 float default_filter_radius(std::string_view name);
 
 /// Creates filter `name` with radius `radius` (0 = the filter's default). Throws UsageError
-/// listing the valid names when `name` is unknown, or when `radius` is negative or above 8.
+/// listing the valid names when `name` is unknown, or when `radius` is negative, above 8 or NaN.
 Filter make_filter(std::string_view name, float radius = 0.f);
 
 }  // namespace raylab

@@ -45,7 +45,17 @@ class PixelSampler {
   std::uint64_t m_seed;
 };
 
-/// Names of the uniform (non-adaptive) samplers: center, regular, random, jittered, cmj, sobol.
+/// Names of the uniform (non-adaptive) samplers:
+///  - center: one sample at (0.5, 0.5);
+///  - regular: the centres of an n x n grid of strata, the same in every pixel;
+///  - random: independent uniform positions;
+///  - jittered: one uniform position in each stratum of an n x n grid (sample `index` in column
+///    index % n, row index / n);
+///  - cmj: correlated multi-jittered (Kensler 2013), stratified over a cols x rows grid
+///    (rows = the largest divisor of spp not above sqrt(spp)) and over the spp columns and the
+///    spp rows of the pixel at once;
+///  - sobol: Owen-scrambled Sobol' (0,2)-sequence; 2^k samples form a (0, k, 2)-net.
+/// All but center and regular draw a different pattern in every pixel and for every seed.
 std::span<const std::string_view> pixel_sampler_names();
 
 /// True when `name` is one of pixel_sampler_names().
@@ -61,7 +71,8 @@ int valid_spp(std::string_view name, int requested);
 std::unique_ptr<PixelSampler> make_pixel_sampler(std::string_view name, int spp, std::uint64_t seed);
 
 /// The notice to show when `valid_spp(name, requested)` differs from `requested`
-/// ("--spp 10 rounded to 9 for the jittered sampler (a square n*n)"), or "" when it does not.
+/// ("--spp 10 rounded to 9 for the jittered sampler (it needs a square count n*n)"), or "" when
+/// it does not. Throws like valid_spp().
 std::string spp_rounding_notice(std::string_view name, int requested);
 
 /// A seed for the other random decisions made along sample `index` of pixel (px, py) (area

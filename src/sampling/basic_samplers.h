@@ -1,0 +1,64 @@
+#pragma once
+/// \file
+/// The simple pixel samplers: center, regular grid, independent random and jittered.
+/// Internal to the library; created by name through make_pixel_sampler().
+
+#include "raylab/sampling/pixel_sampler.h"
+
+namespace raylab {
+
+/// One sample per pixel, at its centre: the classic one ray per pixel.
+class CenterSampler final : public PixelSampler {
+ public:
+  /// `spp` must be 1.
+  explicit CenterSampler(std::uint64_t seed) : PixelSampler(1, seed) {}
+  /// Always (0.5, 0.5).
+  Sample2 sample(int px, int py, int index) const override;
+  /// "center".
+  std::string_view name() const override { return "center"; }
+};
+
+/// n * n samples at the centres of an n x n grid of strata, the same in every pixel. Sample
+/// `index` lies in column index % n, row index / n.
+class RegularSampler final : public PixelSampler {
+ public:
+  /// `n` strata along each axis (n >= 1; spp = n * n).
+  RegularSampler(int n, std::uint64_t seed);
+  /// The centre of stratum (index % n, index / n).
+  Sample2 sample(int px, int py, int index) const override;
+  /// "regular".
+  std::string_view name() const override { return "regular"; }
+
+ private:
+  int m_n;
+};
+
+/// Independent uniform samples: each (pixel, index, seed) hashes to its own random position.
+class RandomSampler final : public PixelSampler {
+ public:
+  /// Any `spp` >= 1.
+  RandomSampler(int spp, std::uint64_t seed) : PixelSampler(spp, seed) {}
+  /// A uniform position, independent of every other (pixel, index).
+  Sample2 sample(int px, int py, int index) const override;
+  /// "random".
+  std::string_view name() const override { return "random"; }
+};
+
+/// Jittered (stratified) sampling: an n x n grid of strata, one uniform random sample in each.
+/// Sample `index` lies in column index % n, row index / n. The positions are those of the
+/// renderer's original JitteredSampler for square counts (same hash, same PCG32 draws), except
+/// that one sample per pixel is jittered over the whole pixel instead of put at its centre.
+class JitteredGridSampler final : public PixelSampler {
+ public:
+  /// `n` strata along each axis (n >= 1; spp = n * n).
+  JitteredGridSampler(int n, std::uint64_t seed);
+  /// A uniform position inside stratum (index % n, index / n).
+  Sample2 sample(int px, int py, int index) const override;
+  /// "jittered".
+  std::string_view name() const override { return "jittered"; }
+
+ private:
+  int m_n;
+};
+
+}  // namespace raylab
