@@ -1,6 +1,7 @@
 #include "raylab/scene/material.h"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -12,6 +13,18 @@ namespace {
 int wrap(int i, int n) {
   const int r = i % n;
   return r < 0 ? r + n : r;
+}
+
+// The zone plate of `t` over the material colour `color` at (u, v). In double: the phase reaches
+// hundreds of radians at the rim, where float would lose the fraction that matters.
+Color zone_plate_color(const Texture& t, Color color, float u, float v) {
+  const double du = double(u) - double(t.zone_center.x);
+  const double dv = double(v) - double(t.zone_center.y);
+  const double r2 = du * du + dv * dv;
+  const double radius = t.zone_radius;
+  if (!(r2 <= radius * radius)) return lerp(t.color2, color, 0.5f);
+  const double s = 0.5 + 0.5 * std::cos(std::numbers::pi * double(t.zone_k) * r2);
+  return lerp(t.color2, color, static_cast<float>(s));
 }
 
 }  // namespace
@@ -56,6 +69,7 @@ Color diffuse_color(const Material& m, float u, float v) {
     return ((iu + iv) & 1) == 0 ? m.color : m.texture.color2;
   }
   if (m.texture.kind == Texture::Kind::kImage && m.texture.image) return m.color * m.texture.image->sample(u, v);
+  if (m.texture.kind == Texture::Kind::kZonePlate) return zone_plate_color(m.texture, m.color, u, v);
   return m.color;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Whitted/Phong materials, the procedural checker texture and image textures.
+/// Whitted/Phong materials, the procedural checker and zone-plate textures and image textures.
 
 #include <memory>
 #include <string>
@@ -13,10 +13,11 @@ namespace raylab {
 
 /// A variation of the diffuse colour over the surface. `kNone` uses the material's colour;
 /// `kChecker` alternates it with `color2`; `kImage` multiplies it by `image` at the surface's
-/// texture coordinates (as glTF's baseColorFactor x baseColorTexture and MTL's Kd x map_Kd do).
+/// texture coordinates (as glTF's baseColorFactor x baseColorTexture and MTL's Kd x map_Kd do);
+/// `kZonePlate` is the analytic antialiasing test chart described at `zone_plate`.
 struct Texture {
   /// Which variation applies.
-  enum class Kind { kNone, kChecker, kImage };
+  enum class Kind { kNone, kChecker, kImage, kZonePlate };
 
   /// No texture.
   Texture() = default;
@@ -31,10 +32,25 @@ struct Texture {
     t.image = std::move(image_);
     return t;
   }
+  /// A zone plate: with r the distance of (u, v) from `center_`, the value
+  /// s = 0.5 + 0.5 cos(pi k r^2) blends from `color2_` (s = 0) to the material colour (s = 1)
+  /// inside the disc r <= `radius_`; outside it the colour is the flat mean of the two. The
+  /// phase pi k r^2 has the derivative 2 pi k r, so the local frequency is k r cycles per unit
+  /// of (u, v): it grows linearly from the centre and reaches k * radius at the rim.
+  static Texture zone_plate(Color color2_, Vec2 center_, float k_, float radius_) {
+    Texture t(Kind::kZonePlate, color2_);
+    t.zone_center = center_;
+    t.zone_k = k_;
+    t.zone_radius = radius_;
+    return t;
+  }
 
   Kind kind = Kind::kNone;         ///< which variation applies
-  Color color2{0.1f, 0.1f, 0.1f};  ///< the checker's second colour (the first is Material::color)
+  Color color2{0.1f, 0.1f, 0.1f};  ///< the checker's (or zone plate's) second colour (the first is Material::color)
   float scale = 1.f;               ///< checker cell size in surface-coordinate units
+  Vec2 zone_center;                ///< kZonePlate: centre of the rings in (u, v)
+  float zone_k = 0.f;              ///< kZonePlate: chirp rate k; local frequency k r cycles per (u, v) unit
+  float zone_radius = 0.f;         ///< kZonePlate: radius of the disc holding the rings (flat mean outside)
   /// kImage: the texels (shared: many materials and scene copies may use one decoded image).
   /// See texture_image.h for the (u, v) convention.
   std::shared_ptr<const TextureImage> image;
