@@ -1,11 +1,190 @@
-// placeholder: `raylab quality` is being written.
+// `raylab quality`: argument parsing and printing only; the study is in the library
+// (render/quality_study.h), the reference cache and the chart in io/.
+
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
 #include "commands.h"
+#include "raylab/accel/two_level.h"
+#include "raylab/core/error.h"
+#include "raylab/io/atomic_file.h"
+#include "raylab/io/line_chart.h"
+#include "raylab/io/quality_reference.h"
+#include "raylab/io/scene_loader.h"
+#include "raylab/render/progress.h"
+#include "raylab/render/quality_study.h"
+#include "raylab/sampling/filter.h"
 
 namespace raylab::cli {
+namespace {
+
+struct QualityArgs {
+  std::string scene;
+  std::string reference = "auto";
+  std::string budgets = "1,4,16,64";
+  std::string samplers;  // empty: all
+  int seeds = 5;
+  std::optional<int> width, height;
+  std::optional<std::string> filter;
+  std::optional<float> filter_radius;
+  int reference_spp = 1024;
+  std::string cache_dir;  // empty: default_reference_cache_dir()
+  int threads = 0;
+  std::string csv, json, plot;
+  bool allow_outside_paths = false;
+  bool quiet = false;
+};
+
+void write_text(const std::string& path, const std::string& text) {
+  write_file_atomically(path, std::span(reinterpret_cast<const unsigned char*>(text.data()), text.size()));
+}
+
+// The image size: as given, else the scene's; one of the two given keeps the scene's aspect.
+void image_size(const QualityArgs& args, RenderSettings& s) {
+  const double aspect = static_cast<double>(s.height) / static_cast<double>(std::max(s.width, 1));
+  if (args.width && args.height) {
+    s.width = *args.width;
+    s.height = *args.height;
+  } else if (args.width) {
+    s.width = *args.width;
+    s.height = std::max(1, static_cast<int>(std::lround(s.width * aspect)));
+  } else if (args.height) {
+    s.height = *args.height;
+    s.width = std::max(1, static_cast<int>(std::lround(s.height / aspect)));
+  }
+}
+
+int run(const QualityArgs& args) {
+  QualityOptions options;
+  options.budgets = parse_budget_list(args.budgets);
+  if (!args.samplers.empty()) options.samplers = parse_sampler_list(args.samplers);
+  options.seeds = args.seeds;
+  options.reference = args.reference;
+  options.reference_spp = args.reference_spp;
+  options.threads = args.threads;
+  options.cache_dir = args.cache_dir.empty() ? default_reference_cache_dir() : args.cache_dir;
+  validate_quality_options(options);
+  if (args.filter) make_filter(*args.filter, args.filter_radius.value_or(0.f));  // a bad name before the scene loads
+  if (!args.plot.empty() && !args.plot.ends_with(".svg")) {
+    throw UsageError("cannot write '" + args.plot + "': the plot is an SVG file (.svg)");
+  }
+  for (const std::string* path : {&args.csv, &args.json, &args.plot}) {
+    if (!path->empty()) check_writable(*path);  // fail before the work, not after it
+  }
+  // A named reference is read first: a missing file should not wait for the scene to load.
+  std::optional<Film> given;
+  if (options.reference != "auto") given = load_reference_file(options.reference);
+
+  LoadOptions load;
+  load.allow_outside_paths = args.allow_outside_paths;
+  Scene scene = load_scene(args.scene, load);
+  for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
+  RenderSettings& s = scene.settings;
+  image_size(args, s);
+  if (args.filter) s.filter = *args.filter;
+  if (args.filter_radius) s.filter_radius = *args.filter_radius;
+  make_filter(s.filter, s.filter_radius);  // the scene's own filter, checked before the work
+  options.reference_key = scene_source_key(args.scene);
+
+  const std::unique_ptr<Accelerator> accel =
+      make_scene_accelerator(scene.geometry, scene.prototypes, scene.instances, SceneAccelOptions{});
+  const bool interactive = ::isatty(STDERR_FILENO) != 0;
+
+  ReferenceImage reference;
+  if (given) {
+    if (given->width() != s.width || given->height() != s.height) {
+      throw InputError(options.reference, fmt::format("the reference image is {}x{} but the study renders {}x{} "
+                                                      "(give --width {} --height {}, or another reference)",
+                                                      given->width(), given->height(), s.width, s.height,
+                                                      given->width(), given->height()));
+    }
+    reference.film = std::move(*given);
+    reference.description = options.reference;
+  } else {
+    std::optional<ProgressBar> bar;
+    if (!args.quiet) bar.emplace("reference", stderr, interactive);
+    reference = obtain_reference(scene, *accel, options, [&bar](int done, int total) {
+      if (bar) bar->update(done, total);
+    });
+    if (bar && reference.rendered) bar->finish(fmt::format("{}x{}, {} spp", s.width, s.height, options.reference_spp));
+  }
+  if (!args.quiet) fmt::print(stderr, "reference: {}\n", reference.description);
+
+  std::optional<ProgressBar> bar;
+  if (!args.quiet) {
+    bar.emplace("quality", stderr, interactive);
+    options.on_progress = [&bar](double fraction, const std::string&) {
+      bar->update(static_cast<int>(fraction * 1000.0), 1000);
+    };
+  }
+  QualityResult result = run_quality_study(scene, *accel, reference.film, options);
+  result.reference = reference.description;
+  if (bar) bar->finish(fmt::format("{} rows", result.rows.size()));
+
+  fmt::print("{}", format_quality_table(result, args.scene));
+  if (const std::optional<BarRatios> ratios = bar_ratios(result)) fmt::print("\n{}\n", format_bar_ratios(*ratios));
+  std::fflush(stdout);
+
+  if (!args.csv.empty()) write_text(args.csv, format_quality_csv(result));
+  if (!args.json.empty()) write_text(args.json, format_quality_json(result, args.scene));
+  if (!args.plot.empty()) write_quality_chart(result, args.scene, args.plot);
+  if (!args.quiet) {
+    for (const std::string* path : {&args.csv, &args.json, &args.plot}) {
+      if (!path->empty()) fmt::print(stderr, "wrote {}\n", *path);
+    }
+  }
+  return 0;
+}
+
+}  // namespace
 
 CommandRunner add_quality_command(CLI::App& app) {
-  app.add_subcommand("quality", "Compare samplers against a reference image (being written)");
-  return [] { return 2; };
+  auto args = std::make_shared<QualityArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "quality",
+      "Render a scene with every pixel sampler at several sample budgets and seeds, and tabulate the error "
+      "against a reference image (RMSE, PSNR, SSIM, 99.9th percentile) against the rays and time spent");
+  cmd->add_option("scene", args->scene, "Scene: a built-in name, an SPD generator (spd:balls) or a file")->required();
+  cmd->add_option("--reference", args->reference,
+                  "Reference image (.exr or .pfm, the study's size), or 'auto': rendered with --reference-spp "
+                  "jittered samples and cached")
+      ->capture_default_str();
+  cmd->add_option("--budgets", args->budgets,
+                  "Samples per pixel to study, comma-separated (adaptive samplers: the most per pixel)")
+      ->capture_default_str();
+  std::string names;
+  for (const std::string& n : quality_sampler_names()) names += (names.empty() ? "" : ",") + n;
+  cmd->add_option("--samplers", args->samplers, "Samplers, comma-separated, in table order (default: " + names + ")");
+  cmd->add_option("--seeds", args->seeds, "Renders per row, seeds 0..K-1 (center, regular, adaptive-corners: one)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--width", args->width, "Image width (default: the scene's)")->check(CLI::Range(1, 16384));
+  cmd->add_option("--height", args->height, "Image height (default: the scene's)")->check(CLI::Range(1, 16384));
+  cmd->add_option("--filter", args->filter,
+                  "Reconstruction filter: box, tent, gaussian, mitchell (default: the scene's)");
+  cmd->add_option("--filter-radius", args->filter_radius, "Filter radius in pixels; 0 = the filter's default");
+  cmd->add_option("--reference-spp", args->reference_spp, "Samples per pixel of an auto reference (jittered)")
+      ->check(CLI::Range(1, 65536))
+      ->capture_default_str();
+  cmd->add_option("--cache-dir", args->cache_dir,
+                  "Folder of cached auto references (default: $XDG_CACHE_HOME/raylab/references, else "
+                  "~/.cache/raylab/references)");
+  cmd->add_option("--threads", args->threads, "Worker threads; 0 = all cores")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  cmd->add_option("--plot", args->plot, "Write an SVG chart: RMSE against primary rays per pixel, log-log");
+  cmd->add_option("--csv", args->csv, "Also write the table as CSV to this file");
+  cmd->add_option("--json", args->json, "Also write the table as JSON to this file");
+  cmd->add_flag("--allow-outside-paths", args->allow_outside_paths,
+                "Let a scene file reference files outside its own folder");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
+  return [args] { return run(*args); };
 }
 
 }  // namespace raylab::cli

@@ -101,15 +101,25 @@ std::string tick_label(double v) {
   return fmt::format("{:.0f}M", v / 1e6);
 }
 
-// Tick values: 0, the 1-2-5 steps below the maximum, and the maximum.
-std::vector<double> tick_values(double max_value) {
-  std::vector<double> ticks = {0.0};
-  for (double decade = 1.0; decade < max_value; decade *= 10.0) {
-    for (double m : {1.0, 2.0, 5.0}) {
-      if (m * decade < max_value) ticks.push_back(m * decade);
+// Tick values: the minimum, round values strictly between (1-2-5 steps of each decade on a log
+// scale, about five even round steps on a linear one), and the maximum.
+std::vector<double> tick_values(const HeatScale& scale) {
+  const double lo = scale.min_value, hi = scale.max_value;
+  std::vector<double> ticks = {lo};
+  if (scale.logarithmic) {
+    for (double decade = 1.0; decade < hi; decade *= 10.0) {
+      for (double m : {1.0, 2.0, 5.0}) {
+        if (m * decade > lo && m * decade < hi) ticks.push_back(m * decade);
+      }
     }
+  } else if (hi > lo) {
+    const double raw = (hi - lo) / 5.0;
+    const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+    const double norm = raw / mag;
+    const double step = std::max(1.0, (norm <= 1.0 ? 1.0 : norm <= 2.0 ? 2.0 : norm <= 5.0 ? 5.0 : 10.0) * mag);
+    for (double v = std::floor(lo / step + 1.0) * step; v < hi; v += step) ticks.push_back(v);
   }
-  if (max_value > 0.0) ticks.push_back(max_value);
+  if (hi > lo) ticks.push_back(hi);
   return ticks;
 }
 
@@ -127,7 +137,7 @@ void draw_legend(Rgb8Image& img, int top, const HeatScale& scale, std::string_vi
     for (int y = bar_top; y < bar_top + bar_h; ++y) img.put(x, y, c);
   }
   // Labels placed greedily from the left; the maximum first, so it is never crowded out.
-  const std::vector<double> ticks = tick_values(scale.max_value);
+  const std::vector<double> ticks = tick_values(scale);
   std::vector<std::pair<int, int>> taken;  // label extents [left, right)
   auto place = [&](double v, bool force) {
     const int x = x0 + static_cast<int>(std::lround(scale.position(v) * static_cast<float>(bar_w - 1)));
@@ -168,8 +178,9 @@ Rgb8 heat_colour(float t) {
 }
 
 float HeatScale::position(double value) const {
-  if (!(max_value > 0.0) || !(value > 0.0)) return 0.f;
-  return static_cast<float>(std::min(1.0, std::log1p(value) / std::log1p(max_value)));
+  const double range = max_value - min_value, v = value - min_value;
+  if (!(range > 0.0) || !(v > 0.0)) return 0.f;
+  return static_cast<float>(std::min(1.0, logarithmic ? std::log1p(v) / std::log1p(range) : v / range));
 }
 
 void draw_text(Rgb8Image& image, int x, int y, std::string_view text, Rgb8 colour, int scale) {
@@ -200,12 +211,34 @@ Rgb8Image render_heatmap(std::span<const std::uint32_t> values, int width, int h
     throw std::invalid_argument("render_heatmap: values do not match the image size");
   }
   const int s = width >= 2 * kMinWidth ? 2 : 1;
-  Rgb8Image img(std::max(width, kMinWidth * s), height + legend_height(s), kBackground);
+  const int title_room = text_width(title, s) + 12 * s;  // the legend's margin on both sides
+  Rgb8Image img(std::max({width, kMinWidth * s, title_room}), height + legend_height(s), kBackground);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) img.at(x, y) = scale.colour(values[static_cast<std::size_t>(y) * width + x]);
   }
   draw_legend(img, height, scale, title, s);
   return img;
+}
+
+Rgb8Image render_sample_count_image(std::span<const std::uint32_t> counts, int width, int height, CountScale scale) {
+  if (counts.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
+    throw std::invalid_argument("render_sample_count_image: counts do not match the image size");
+  }
+  HeatScale heat;
+  heat.logarithmic = scale == CountScale::kLog;
+  if (!counts.empty()) {
+    const auto [lo, hi] = std::minmax_element(counts.begin(), counts.end());
+    heat.max_value = *hi;
+    heat.min_value = *lo < *hi ? *lo : 0.0;  // one count everywhere: show it against zero
+  }
+  return render_heatmap(
+      counts, width, height, heat,
+      heat.logarithmic ? "primary samples per pixel, log scale" : "primary samples per pixel, linear scale");
+}
+
+void write_sample_count_png(std::span<const std::uint32_t> counts, int width, int height, const std::string& path,
+                            CountScale scale) {
+  write_png(render_sample_count_image(counts, width, height, scale), path);
 }
 
 void write_png(const Rgb8Image& image, const std::string& path) {

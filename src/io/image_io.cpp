@@ -78,11 +78,30 @@ class MemoryOStream final : public Imf::OStream {
   std::size_t m_pos = 0;
 };
 
-std::vector<unsigned char> encode_exr(const Film& film) {
+// Layers are programmer input: a mismatch is a bug in the caller, not a user error.
+void check_layers(const Film& film, std::span<const ImageLayer> layers) {
+  const std::size_t pixels = std::size_t(film.width()) * std::size_t(film.height());
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    const ImageLayer& l = layers[i];
+    if (l.values.size() != pixels) {
+      throw std::invalid_argument("image layer '" + l.name + "' has " + std::to_string(l.values.size()) +
+                                  " values for " + std::to_string(pixels) + " pixels");
+    }
+    if (l.name.empty() || l.name == "R" || l.name == "G" || l.name == "B") {
+      throw std::invalid_argument("image layer name '" + l.name + "' is empty or taken by the colour");
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (layers[j].name == l.name) throw std::invalid_argument("image layer '" + l.name + "' is given twice");
+    }
+  }
+}
+
+std::vector<unsigned char> encode_exr(const Film& film, std::span<const ImageLayer> layers) {
   Imf::Header header(film.width(), film.height());
   header.channels().insert("R", Imf::Channel(Imf::FLOAT));
   header.channels().insert("G", Imf::Channel(Imf::FLOAT));
   header.channels().insert("B", Imf::Channel(Imf::FLOAT));
+  for (const ImageLayer& l : layers) header.channels().insert(l.name, Imf::Channel(Imf::FLOAT));
   MemoryOStream stream;
   Imf::OutputFile file(stream, header);
   Imf::FrameBuffer fb;
@@ -91,6 +110,10 @@ std::vector<unsigned char> encode_exr(const Film& film) {
   fb.insert("R", Imf::Slice(Imf::FLOAT, base + 0, xs, ys));
   fb.insert("G", Imf::Slice(Imf::FLOAT, base + 4, xs, ys));
   fb.insert("B", Imf::Slice(Imf::FLOAT, base + 8, xs, ys));
+  for (const ImageLayer& l : layers) {
+    auto* values = reinterpret_cast<char*>(const_cast<float*>(l.values.data()));
+    fb.insert(l.name, Imf::Slice(Imf::FLOAT, values, sizeof(float), sizeof(float) * std::size_t(film.width())));
+  }
   file.setFrameBuffer(fb);
   file.writePixels(film.height());
   return std::move(stream.data());
@@ -164,16 +187,20 @@ void check_image_extension(const std::string& path) {
                    "' (valid: .png, .exr, .pfm)");
 }
 
-std::vector<unsigned char> encode_image(const Film& film, std::string_view extension) {
+std::vector<unsigned char> encode_image(const Film& film, std::string_view extension,
+                                        std::span<const ImageLayer> layers) {
+  check_layers(film, layers);
   if (extension == ".png") return encode_png(film);
   if (extension == ".pfm") return encode_pfm(film);
-  if (extension == ".exr") return encode_exr(film);
+  if (extension == ".exr") return encode_exr(film, layers);
   throw UsageError("unknown image format '" + std::string(extension) + "' (valid: .png, .exr, .pfm)");
 }
 
-void write_image(const Film& film, const std::string& path) {
+void write_image(const Film& film, const std::string& path) { write_image(film, path, {}); }
+
+void write_image(const Film& film, const std::string& path, std::span<const ImageLayer> layers) {
   check_image_extension(path);
-  const std::vector<unsigned char> bytes = encode_image(film, lowercase_extension(path));
+  const std::vector<unsigned char> bytes = encode_image(film, lowercase_extension(path), layers);
   write_file_atomically(path, bytes);
 }
 
@@ -182,6 +209,29 @@ Film read_image(const std::string& path) {
   if (ext == ".pfm") return read_pfm(path);
   if (ext == ".exr") return read_exr(path);
   return read_png(path);
+}
+
+std::vector<ImageLayer> read_exr_channels(const std::string& path) {
+  try {
+    Imf::InputFile file(path.c_str());
+    const auto dw = file.header().dataWindow();
+    const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
+    std::vector<ImageLayer> out;
+    for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) {
+      out.push_back({it.name(), std::vector<float>(std::size_t(w) * std::size_t(h))});
+    }
+    Imf::FrameBuffer fb;
+    for (ImageLayer& l : out) {
+      char* base = reinterpret_cast<char*>(l.values.data()) -
+                   (std::ptrdiff_t(dw.min.x) + std::ptrdiff_t(dw.min.y) * w) * std::ptrdiff_t(sizeof(float));
+      fb.insert(l.name, Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * std::size_t(w)));
+    }
+    file.setFrameBuffer(fb);
+    file.readPixels(dw.min.y, dw.max.y);
+    return out;
+  } catch (const std::exception& e) {
+    throw InputError(path, std::string("cannot read EXR: ") + e.what());
+  }
 }
 
 double image_rmse(const Film& a, const Film& b) {

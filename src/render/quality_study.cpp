@@ -1,1 +1,383 @@
-// placeholder: being written
+#include "raylab/render/quality_study.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "raylab/core/error.h"
+#include "raylab/render/image_metrics.h"
+#include "raylab/render/renderer.h"
+#include "raylab/sampling/filter.h"
+#include "raylab/sampling/pixel_sampler.h"
+
+namespace raylab {
+namespace {
+
+constexpr std::array<std::string_view, 8> kSamplers = {"center", "regular", "random",           "jittered",
+                                                       "cmj",    "sobol",   "adaptive-corners", "adaptive"};
+constexpr int kMaxBudget = 1 << 16;
+constexpr int kMaxSeeds = 1000;
+
+std::string valid_samplers() {
+  std::string out;
+  for (std::string_view s : kSamplers) out += (out.empty() ? "" : ", ") + std::string(s);
+  return out;
+}
+
+// Splits "a,b,,c" at commas, trimming blanks; empty entries are kept so they can be reported.
+std::vector<std::string> split_list(std::string_view text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    std::string_view item = text.substr(start, comma == std::string_view::npos ? text.npos : comma - start);
+    while (!item.empty() && item.front() == ' ') item.remove_prefix(1);
+    while (!item.empty() && item.back() == ' ') item.remove_suffix(1);
+    out.emplace_back(item);
+    if (comma == std::string_view::npos) return out;
+    start = comma + 1;
+  }
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// The renders a study makes, in order, with the weight (samples per pixel) that progress uses.
+struct PlannedRender {
+  std::size_t row = 0;
+  int seed = 0;
+  double weight = 1.0;
+};
+
+std::string json_string(std::string_view s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      out += fmt::format("\\u{:04x}", static_cast<unsigned>(c));
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+// A finite number for JSON, else null (JSON has no infinity).
+std::string json_number(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null"; }
+
+std::string psnr_text(double v) { return std::isfinite(v) ? fmt::format("{:.2f}", v) : "inf"; }
+
+}  // namespace
+
+std::vector<std::string> quality_sampler_names() { return {kSamplers.begin(), kSamplers.end()}; }
+
+bool sampler_is_deterministic(std::string_view s) { return s == "center" || s == "regular" || s == "adaptive-corners"; }
+
+bool sampler_is_adaptive(std::string_view s) { return s == "adaptive-corners" || s == "adaptive"; }
+
+int used_spp(std::string_view sampler, int budget) {
+  return sampler_is_adaptive(sampler) ? budget : valid_spp(sampler, budget);
+}
+
+void validate_quality_options(const QualityOptions& o) {
+  if (o.samplers.empty()) throw UsageError("no sampler to study (valid: " + valid_samplers() + ")");
+  for (std::size_t i = 0; i < o.samplers.size(); ++i) {
+    const std::string& s = o.samplers[i];
+    if (std::find(kSamplers.begin(), kSamplers.end(), s) == kSamplers.end()) {
+      throw UsageError("unknown sampler '" + s + "' (valid: " + valid_samplers() + ")");
+    }
+    if (std::find(o.samplers.begin(), o.samplers.begin() + static_cast<std::ptrdiff_t>(i), s) !=
+        o.samplers.begin() + static_cast<std::ptrdiff_t>(i)) {
+      throw UsageError("sampler '" + s + "' is listed twice");
+    }
+  }
+  if (o.budgets.empty()) throw UsageError("no sample budget to study (e.g. --budgets 1,4,16,64)");
+  for (std::size_t i = 0; i < o.budgets.size(); ++i) {
+    const int b = o.budgets[i];
+    if (b < 1 || b > kMaxBudget) {
+      throw UsageError(fmt::format("sample budget {} is out of range (1 to {})", b, kMaxBudget));
+    }
+    if (std::count(o.budgets.begin(), o.budgets.end(), b) > 1) {
+      throw UsageError(fmt::format("sample budget {} is listed twice", b));
+    }
+  }
+  if (o.seeds < 1 || o.seeds > kMaxSeeds) {
+    throw UsageError(fmt::format("seed count {} is out of range (1 to {})", o.seeds, kMaxSeeds));
+  }
+  if (o.reference_spp < 1 || o.reference_spp > kMaxBudget) {
+    throw UsageError(fmt::format("reference samples {} is out of range (1 to {})", o.reference_spp, kMaxBudget));
+  }
+}
+
+std::vector<int> parse_budget_list(std::string_view text) {
+  std::vector<int> out;
+  for (const std::string& item : split_list(text)) {
+    std::size_t used = 0;
+    long value = -1;
+    try {
+      value = std::stol(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (item.empty() || used != item.size() || value < 1 || value > kMaxBudget) {
+      throw UsageError(fmt::format("--budgets: '{}' is not a sample count from 1 to {} (e.g. --budgets 1,4,16,64)",
+                                   item, kMaxBudget));
+    }
+    out.push_back(static_cast<int>(value));
+  }
+  return out;
+}
+
+std::vector<std::string> parse_sampler_list(std::string_view text) {
+  std::vector<std::string> out = split_list(text);
+  for (const std::string& s : out) {
+    if (std::find(kSamplers.begin(), kSamplers.end(), s) == kSamplers.end()) {
+      throw UsageError("--samplers: unknown sampler '" + s + "' (valid: " + valid_samplers() + ")");
+    }
+  }
+  return out;
+}
+
+const QualityRow* QualityResult::find(std::string_view sampler, int budget) const {
+  for (const QualityRow& r : rows) {
+    if (r.sampler == sampler && r.budget == budget) return &r;
+  }
+  return nullptr;
+}
+
+RenderSettings reference_settings(const RenderSettings& scene_settings, const QualityOptions& options) {
+  RenderSettings s = scene_settings;
+  s.sampler = "jittered";
+  s.spp = valid_spp("jittered", options.reference_spp);
+  s.seed = options.reference_seed;
+  return s;
+}
+
+Film render_reference(const Scene& scene, const Accelerator& accel, const QualityOptions& options,
+                      const std::function<void(int, int)>& on_progress) {
+  Scene work = scene;
+  work.settings = reference_settings(scene.settings, options);
+  Film film(work.settings.width, work.settings.height);
+  RenderOptions ro;
+  ro.threads = options.threads;
+  ro.on_progress = on_progress;
+  render(work, accel, film, ro);
+  return film;
+}
+
+std::string reference_key_text(const RenderSettings& s, const QualityOptions& o) {
+  const RenderSettings r = reference_settings(s, o);
+  // Everything that changes the reference image and is not already in the scene source's key
+  // (the command's overrides), spelled out so that the key can be read when debugging.
+  return fmt::format(
+      "raylab reference v{}\nsource {}\nsize {}x{}\nfilter {} radius {}\nmax_depth {}\nbackground {} {} {}\n"
+      "sky_gradient {} horizon {} {} {}\nambient {} {} {}\nsampler {} spp {} seed {}\n",
+      kReferenceFormatVersion, o.reference_key, r.width, r.height, r.filter, r.filter_radius, r.max_depth,
+      r.background.x, r.background.y, r.background.z, r.sky_gradient ? 1 : 0, r.horizon.x, r.horizon.y, r.horizon.z,
+      r.ambient.x, r.ambient.y, r.ambient.z, r.sampler, r.spp, r.seed);
+}
+
+std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t hash) {
+  for (const char c : bytes) {
+    hash ^= static_cast<unsigned char>(c);
+    hash *= 0x100000001b3ull;
+  }
+  return hash;
+}
+
+std::string reference_file_name(const RenderSettings& s, const QualityOptions& o) {
+  return fmt::format("reference-{:016x}.exr", fnv1a64(reference_key_text(s, o)));
+}
+
+QualityResult run_quality_study(const Scene& scene, const Accelerator& accel, const Film& reference,
+                                const QualityOptions& options) {
+  validate_quality_options(options);
+  const RenderSettings& base = scene.settings;
+  if (reference.width() != base.width || reference.height() != base.height) {
+    throw InputError("", fmt::format("the reference image is {}x{} but the study renders {}x{}", reference.width(),
+                                     reference.height(), base.width, base.height));
+  }
+  // The renderer refuses adaptive samplers with a filter wider than the pixel box: say so now,
+  // not after the uniform rows have run.
+  const Filter filter = make_filter(base.filter, base.filter_radius);
+  const bool pixel_box = filter.kind() == FilterKind::kBox && filter.radius() == 0.5f;
+  for (const std::string& s : options.samplers) {
+    if (sampler_is_adaptive(s) && !pixel_box) {
+      throw UsageError("sampler '" + s + "' weights its samples within the pixel (the box filter); with filter '" +
+                       base.filter + "' leave the adaptive samplers out (--samplers) or use --filter box");
+    }
+  }
+  std::vector<int> budgets = options.budgets;
+  std::sort(budgets.begin(), budgets.end());
+
+  QualityResult result;
+  result.width = base.width;
+  result.height = base.height;
+  result.filter = base.filter;
+  result.filter_radius = base.filter_radius;
+  result.max_depth = base.max_depth;
+  result.seeds = options.seeds;
+  result.threads = options.threads;
+
+  // The plan first, so that progress knows the total work.
+  std::vector<PlannedRender> plan;
+  for (const std::string& sampler : options.samplers) {
+    for (const int budget : budgets) {
+      if (sampler == "center" && budget != budgets.front()) continue;  // one sample whatever the budget
+      QualityRow row;
+      row.sampler = sampler;
+      row.budget = budget;
+      row.spp = used_spp(sampler, budget);
+      row.seeds = sampler_is_deterministic(sampler) ? 1 : options.seeds;
+      for (int seed = 0; seed < row.seeds; ++seed) plan.push_back({result.rows.size(), seed, double(row.spp)});
+      result.rows.push_back(row);
+    }
+  }
+  double total = 0.0;
+  for (const PlannedRender& p : plan) total += p.weight;
+
+  Scene work = scene;
+  Film film(base.width, base.height);
+  const double pixels = static_cast<double>(base.width) * static_cast<double>(base.height);
+  std::vector<std::vector<ImageError>> errors(result.rows.size());
+  std::vector<std::vector<double>> seconds(result.rows.size()), rays(result.rows.size());
+  double done = 0.0;
+  for (const PlannedRender& p : plan) {
+    QualityRow& row = result.rows[p.row];
+    work.settings.sampler = row.sampler;
+    work.settings.spp = row.budget;
+    work.settings.seed = static_cast<std::uint64_t>(p.seed);
+    RenderOptions ro;
+    ro.threads = options.threads;
+    if (options.on_progress) {
+      const std::string step = fmt::format("{} {} spp, seed {}", row.sampler, row.budget, p.seed);
+      ro.on_progress = [&, step, weight = p.weight](int tiles_done, int tiles) {
+        options.on_progress((done + weight * tiles_done / std::max(tiles, 1)) / total, step);
+      };
+    }
+    const RenderResult r = render(work, accel, film, ro);
+    done += p.weight;
+    // primary_rays is filled by the sampling renderer; the count by kind always is.
+    const std::uint64_t primary = r.primary_rays ? r.primary_rays : r.stats.rays[int(RayKind::kPrimary)];
+    rays[p.row].push_back(pixels > 0 ? static_cast<double>(primary) / pixels : 0.0);
+    seconds[p.row].push_back(r.seconds);
+    errors[p.row].push_back(measure_error(film, reference));
+  }
+
+  for (std::size_t i = 0; i < result.rows.size(); ++i) {
+    QualityRow& row = result.rows[i];
+    const std::vector<ImageError>& e = errors[i];
+    const double n = static_cast<double>(e.size());
+    row.rays_per_pixel = std::accumulate(rays[i].begin(), rays[i].end(), 0.0) / n;
+    row.seconds = median(seconds[i]);
+    row.rmse_min = std::numeric_limits<double>::infinity();
+    row.rmse_max = 0.0;
+    for (const ImageError& x : e) {
+      row.rmse += x.rmse / n;
+      row.psnr += x.psnr / n;
+      row.ssim += x.ssim / n;
+      row.p999 += x.p999 / n;
+      row.rmse_min = std::min(row.rmse_min, x.rmse);
+      row.rmse_max = std::max(row.rmse_max, x.rmse);
+    }
+    double var = 0.0;
+    for (const ImageError& x : e) var += (x.rmse - row.rmse) * (x.rmse - row.rmse);
+    row.rmse_stddev = e.size() > 1 ? std::sqrt(var / (n - 1.0)) : 0.0;
+  }
+  return result;
+}
+
+std::optional<BarRatios> bar_ratios(const QualityResult& result, std::string_view sampler, std::string_view baseline,
+                                    int budget) {
+  const QualityRow* a = result.find(sampler, budget);
+  const QualityRow* b = result.find(baseline, budget);
+  if (!a || !b) return std::nullopt;
+  auto ratio = [](double x, double y) { return y > 0.0 ? x / y : (x > 0.0 ? INFINITY : 1.0); };
+  BarRatios r;
+  r.sampler = a->sampler;
+  r.baseline = b->sampler;
+  r.budget = budget;
+  r.rays = ratio(a->rays_per_pixel, b->rays_per_pixel);
+  r.rmse = ratio(a->rmse, b->rmse);
+  r.p999 = ratio(a->p999, b->p999);
+  r.time = ratio(a->seconds, b->seconds);
+  return r;
+}
+
+std::string format_bar_ratios(const BarRatios& r) {
+  return fmt::format("{} vs {} at {} spp: primary rays x{:.3f}, RMSE x{:.3f}, p99.9 x{:.3f}, time x{:.3f}", r.sampler,
+                     r.baseline, r.budget, r.rays, r.rmse, r.p999, r.time);
+}
+
+std::string format_quality_table(const QualityResult& result, const std::string& scene_name) {
+  std::size_t name_width = 8;
+  for (const QualityRow& r : result.rows) name_width = std::max(name_width, r.sampler.size());
+  const int nw = static_cast<int>(name_width) + 2;
+  std::string out = fmt::format(
+      "scene {}: {}x{}, filter {}{}, depth {}; up to {} seeds per row (center, regular, adaptive-corners: one)\n",
+      scene_name, result.width, result.height, result.filter,
+      result.filter_radius > 0.f ? fmt::format(" (radius {:g})", result.filter_radius) : "", result.max_depth,
+      result.seeds);
+  out += fmt::format("reference: {}\n", result.reference.empty() ? "(given)" : result.reference);
+  out += "RMSE of linear RGB (mean and min..max over seeds); PSNR and SSIM on sRGB; p99.9: pixel error percentile;\n";
+  out += "rays/px: primary rays per pixel (mean); time: median render time\n";
+  out += fmt::format("{:<{}}{:>7}{:>6}{:>9}{:>10}{:>11}{:>23}{:>9}{:>8}{:>10}\n", "sampler", nw, "budget", "spp",
+                     "rays/px", "time s", "RMSE", "RMSE min..max", "PSNR dB", "SSIM", "p99.9");
+  for (const QualityRow& r : result.rows) {
+    out += fmt::format("{:<{}}{:>7}{:>6}{:>9.2f}{:>10.4f}{:>11.5f}{:>23}{:>9}{:>8.4f}{:>10.5f}\n", r.sampler, nw,
+                       r.budget, r.spp, r.rays_per_pixel, r.seconds, r.rmse,
+                       fmt::format("{:.5f}..{:.5f}", r.rmse_min, r.rmse_max), psnr_text(r.psnr), r.ssim, r.p999);
+  }
+  return out;
+}
+
+std::string format_quality_csv(const QualityResult& result) {
+  std::string out =
+      "sampler,budget,spp,seeds,rays_per_pixel,seconds,rmse,rmse_min,rmse_max,rmse_stddev,psnr_db,ssim,p999\n";
+  for (const QualityRow& r : result.rows) {
+    out += fmt::format("{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{:.6g},{:.6g}\n", r.sampler, r.budget,
+                       r.spp, r.seeds, r.rays_per_pixel, r.seconds, r.rmse, r.rmse_min, r.rmse_max, r.rmse_stddev,
+                       std::isfinite(r.psnr) ? fmt::format("{:.6g}", r.psnr) : "inf", r.ssim, r.p999);
+  }
+  return out;
+}
+
+std::string format_quality_json(const QualityResult& result, const std::string& scene_name) {
+  std::string out = fmt::format(
+      "{{\n  \"scene\": {},\n  \"width\": {},\n  \"height\": {},\n  \"filter\": {},\n  \"filter_radius\": {},\n"
+      "  \"max_depth\": {},\n  \"seeds\": {},\n  \"reference\": {},\n  \"rows\": [",
+      json_string(scene_name), result.width, result.height, json_string(result.filter),
+      json_number(result.filter_radius), result.max_depth, result.seeds, json_string(result.reference));
+  for (std::size_t i = 0; i < result.rows.size(); ++i) {
+    const QualityRow& r = result.rows[i];
+    out += fmt::format(
+        "{}\n    {{\"sampler\": {}, \"budget\": {}, \"spp\": {}, \"seeds\": {}, \"rays_per_pixel\": {}, "
+        "\"seconds\": {}, \"rmse\": {}, \"rmse_min\": {}, \"rmse_max\": {}, \"rmse_stddev\": {}, \"psnr_db\": {}, "
+        "\"ssim\": {}, \"p999\": {}}}",
+        i ? "," : "", json_string(r.sampler), r.budget, r.spp, r.seeds, json_number(r.rays_per_pixel),
+        json_number(r.seconds), json_number(r.rmse), json_number(r.rmse_min), json_number(r.rmse_max),
+        json_number(r.rmse_stddev), json_number(r.psnr), json_number(r.ssim), json_number(r.p999));
+  }
+  out += "\n  ]";
+  if (const std::optional<BarRatios> b = bar_ratios(result)) {
+    out += fmt::format(
+        ",\n  \"bar\": {{\"sampler\": {}, \"baseline\": {}, \"budget\": {}, \"rays_ratio\": {}, \"rmse_ratio\": {}, "
+        "\"p999_ratio\": {}, \"time_ratio\": {}}}",
+        json_string(b->sampler), json_string(b->baseline), b->budget, json_number(b->rays), json_number(b->rmse),
+        json_number(b->p999), json_number(b->time));
+  }
+  return out + "\n}\n";
+}
+
+}  // namespace raylab

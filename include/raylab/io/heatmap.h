@@ -41,12 +41,14 @@ struct Rgb8Image {
 /// readable in grey and by colour-blind viewers) at `t`, clamped to [0, 1].
 Rgb8 heat_colour(float t);
 
-/// A colour scale from 0 to `max_value`, logarithmic (log(1 + v)), so that structures whose
-/// costs differ by orders of magnitude stay readable on one scale.
+/// A colour scale from `min_value` to `max_value`, logarithmic by default (log(1 + v - min)),
+/// so that structures whose costs differ by orders of magnitude stay readable on one scale.
 struct HeatScale {
-  double max_value = 1.0;  ///< value drawn in the map's last colour (values above are clamped)
+  double max_value = 1.0;   ///< value drawn in the map's last colour (values above are clamped)
+  bool logarithmic = true;  ///< log(1 + v - min) spacing; false: linear in v
+  double min_value = 0.0;   ///< value drawn in the map's first colour (values below are clamped)
 
-  /// Position of `value` on the colour map, in [0, 1].
+  /// Position of `value` on the colour map, in [0, 1]; 0 when the range is empty.
   float position(double value) const;
   /// The colour of `value`.
   Rgb8 colour(double value) const { return heat_colour(position(value)); }
@@ -63,10 +65,30 @@ int text_width(std::string_view text, int scale);
 int legend_height(int scale);
 
 /// Draws `values` (width x height, row-major) through `scale`, with a legend strip below it:
-/// `title`, the colour bar from 0 to the maximum and labelled ticks. The image is widened (with
-/// a dark background) when the map is too narrow for the legend.
+/// `title`, the colour bar from the scale's minimum to its maximum and labelled ticks. The image
+/// is widened (with a dark background) when the map is too narrow for the legend or its title.
 Rgb8Image render_heatmap(std::span<const std::uint32_t> values, int width, int height, const HeatScale& scale,
                          std::string_view title);
+
+/// How a sample-count image spaces its colours.
+enum class CountScale {
+  kLinear,  ///< even steps in the count
+  kLog,     ///< even steps in log(1 + count - min): a few refined pixels stand out among many
+};
+
+/// The false-colour picture of a per-pixel primary-sample count (`counts`: width x height,
+/// row-major, e.g. RenderResult::samples_per_pixel): viridis from the smallest count (dark) to
+/// the largest (yellow) on `scale`, with the legend of render_heatmap titled "primary samples
+/// per pixel" plus the scale, whose labels give the range (the smallest and largest counts and
+/// round values between). A uniform count is drawn on the range 0..count (all one colour).
+/// Throws std::invalid_argument when `counts` does not have width x height values.
+Rgb8Image render_sample_count_image(std::span<const std::uint32_t> counts, int width, int height,
+                                    CountScale scale = CountScale::kLog);
+
+/// Writes render_sample_count_image(...) to `path` as a PNG, atomically (InputError when the
+/// file cannot be written).
+void write_sample_count_png(std::span<const std::uint32_t> counts, int width, int height, const std::string& path,
+                            CountScale scale = CountScale::kLog);
 
 /// Writes `image` as a PNG file, atomically.
 void write_png(const Rgb8Image& image, const std::string& path);

@@ -1,0 +1,138 @@
+// Log-log line charts: decade ticks around the data, points where the log scale puts them, one
+// line and legend entry per series, escaped text, and the quality study's chart.
+
+#include "raylab/io/line_chart.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <regex>
+
+namespace raylab {
+namespace {
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// The (cx, cy) of every marker circle, in document order.
+std::vector<std::pair<double, double>> markers(const std::string& svg) {
+  std::vector<std::pair<double, double>> out;
+  const std::regex re("<circle class=\"point\" cx=\"([-0-9.]+)\" cy=\"([-0-9.]+)\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), re); it != std::sregex_iterator(); ++it) {
+    out.emplace_back(std::stod((*it)[1]), std::stod((*it)[2]));
+  }
+  return out;
+}
+
+// The tick labels: text elements anchored at the middle (x axis) or the end (y axis).
+bool has_label(const std::string& svg, const std::string& anchor, const std::string& label) {
+  return std::regex_search(svg, std::regex("text-anchor=\"" + anchor + "\">" +
+                                           std::regex_replace(label, std::regex("\\."), "\\.") + "</text>"));
+}
+
+LineChart two_lines() {
+  LineChart c;
+  c.title = "RMSE <vs> rays & \"time\"";
+  c.x_label = "rays per pixel";
+  c.y_label = "RMSE";
+  c.series = {{"jittered", {{1, 0.1}, {4, 0.05}, {16, 0.025}, {64, 0.0125}}},
+              {"adaptive", {{1.5, 0.06}, {3, 0.02}, {0, 0.5}, {5, NAN}, {6, -1}}}};
+  return c;
+}
+
+TEST(LineChart, AxesSpanWholeDecadesAroundTheData) {
+  const std::string svg = line_chart_svg(two_lines());
+  ASSERT_TRUE(svg.starts_with("<?xml")) << svg.substr(0, 80);
+  EXPECT_TRUE(svg.ends_with("</svg>\n"));
+  // x: 1 .. 64 -> 1, 10, 100; y: 0.0125 .. 0.1 -> 0.01, 0.1 (0.1 is a decade itself).
+  for (const char* x : {"1", "10", "100"}) EXPECT_TRUE(has_label(svg, "middle", x)) << x;
+  EXPECT_FALSE(has_label(svg, "middle", "1000"));
+  for (const char* y : {"0.01", "0.1"}) EXPECT_TRUE(has_label(svg, "end", y)) << y;
+  EXPECT_FALSE(has_label(svg, "end", "1"));
+  EXPECT_FALSE(has_label(svg, "end", "0.001"));
+}
+
+TEST(LineChart, PointsLieWhereTheLogScalePutsThem) {
+  const std::vector<std::pair<double, double>> m = markers(line_chart_svg(two_lines()));
+  ASSERT_EQ(m.size(), 6u);  // the points with a zero, negative or NaN coordinate are left out
+  // The plot spans x 84..620 for 10^0..10^2 and y 456..56 for 10^-2..10^-1.
+  auto px = [](double x) { return 84.0 + std::log10(x) / 2.0 * 536.0; };
+  auto py = [](double y) { return 456.0 - (std::log10(y) + 2.0) * 400.0; };
+  const double xs[] = {1, 4, 16, 64, 1.5, 3}, ys[] = {0.1, 0.05, 0.025, 0.0125, 0.06, 0.02};
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_NEAR(m[i].first, px(xs[i]), 0.051) << i;
+    EXPECT_NEAR(m[i].second, py(ys[i]), 0.051) << i;
+  }
+  // Halving the error at every factor four of rays is a straight line of slope -1/2: equal
+  // steps on both axes.
+  EXPECT_NEAR(m[1].first - m[0].first, m[2].first - m[1].first, 0.11);
+  EXPECT_NEAR(m[1].second - m[0].second, m[2].second - m[1].second, 0.11);
+}
+
+TEST(LineChart, OneLineAndOneLegendEntryPerSeriesWithEscapedText) {
+  const std::string svg = line_chart_svg(two_lines());
+  EXPECT_EQ(count(svg, "<g class=\"series\">"), 2u);
+  EXPECT_EQ(count(svg, "<polyline class=\"line\""), 2u);
+  EXPECT_NE(svg.find(">jittered</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">adaptive</text>"), std::string::npos);
+  EXPECT_NE(svg.find("RMSE &lt;vs&gt; rays &amp; &quot;time&quot;"), std::string::npos);
+  EXPECT_EQ(svg.find("<vs>"), std::string::npos);
+  EXPECT_NE(svg.find(">rays per pixel</text>"), std::string::npos);
+  EXPECT_NE(svg.find("rotate(-90)"), std::string::npos);  // the y label stands upright
+}
+
+TEST(LineChart, EmptyChartsStillHaveAxes) {
+  LineChart c;
+  c.title = "nothing";
+  c.series = {{"none", {{0, 0}}}};
+  const std::string svg = line_chart_svg(c);
+  EXPECT_TRUE(svg.ends_with("</svg>\n"));
+  EXPECT_EQ(count(svg, "<polyline"), 0u);
+  EXPECT_TRUE(has_label(svg, "middle", "1"));
+  EXPECT_TRUE(has_label(svg, "middle", "10"));
+}
+
+TEST(LineChart, QualityChartHasALinePerSamplerInRayOrder) {
+  QualityResult r;
+  r.width = 64;
+  r.height = 48;
+  r.filter = "box";
+  auto row = [](std::string s, int budget, double rays, double rmse) {
+    QualityRow q;
+    q.sampler = std::move(s);
+    q.budget = budget;
+    q.rays_per_pixel = rays;
+    q.rmse = rmse;
+    return q;
+  };
+  r.rows = {row("center", 1, 1, 0.2), row("jittered", 4, 4, 0.05), row("jittered", 1, 1, 0.1),
+            row("adaptive", 4, 1.7, 0.04), row("adaptive", 16, 2.5, 0.02)};
+  const LineChart c = quality_chart(r, "aa-edges");
+  ASSERT_EQ(c.series.size(), 3u);
+  EXPECT_EQ(c.series[0].name, "center");
+  EXPECT_EQ(c.series[1].name, "jittered");
+  ASSERT_EQ(c.series[1].points.size(), 2u);
+  EXPECT_EQ(c.series[1].points[0].x, 1.0);  // sorted by rays
+  EXPECT_EQ(c.series[1].points[1].y, 0.05);
+  EXPECT_EQ(c.series[2].points[1].x, 2.5);
+  EXPECT_NE(c.title.find("aa-edges"), std::string::npos);
+  EXPECT_NE(c.x_label.find("primary rays per pixel"), std::string::npos);
+
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("raylab-line-chart-" + std::to_string(::getpid()) + ".svg")).string();
+  write_quality_chart(r, "aa-edges", path);
+  std::ifstream in(path);
+  const std::string written{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::filesystem::remove(path);
+  EXPECT_EQ(written, line_chart_svg(c));
+}
+
+}  // namespace
+}  // namespace raylab
