@@ -33,6 +33,7 @@ struct QualityArgs {
   std::optional<int> width, height;
   std::optional<std::string> filter;
   std::optional<float> filter_radius;
+  std::optional<float> aa_threshold;
   int reference_spp = 1024;
   std::string cache_dir;  // empty: default_reference_cache_dir()
   int threads = 0;
@@ -89,6 +90,7 @@ int run(const QualityArgs& args) {
   image_size(args, s);
   if (args.filter) s.filter = *args.filter;
   if (args.filter_radius) s.filter_radius = *args.filter_radius;
+  if (args.aa_threshold) s.aa_threshold = *args.aa_threshold;
   make_filter(s.filter, s.filter_radius);  // the scene's own filter, checked before the work
   options.reference_key = scene_source_key(args.scene);
 
@@ -169,6 +171,9 @@ CommandRunner add_quality_command(CLI::App& app) {
   cmd->add_option("--filter", args->filter,
                   "Reconstruction filter: box, tent, gaussian, mitchell (default: the scene's)");
   cmd->add_option("--filter-radius", args->filter_radius, "Filter radius in pixels; 0 = the filter's default");
+  cmd->add_option("--aa-threshold", args->aa_threshold,
+                  "Adaptive samplers: colour difference that triggers refinement (default: the sampler's)")
+      ->check(CLI::Range(0.f, 1.f));
   cmd->add_option("--reference-spp", args->reference_spp, "Samples per pixel of an auto reference (jittered)")
       ->check(CLI::Range(1, 65536))
       ->capture_default_str();

@@ -3,6 +3,8 @@
 #include <fmt/core.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,6 +16,8 @@
 #include "raylab/accel/two_level.h"
 #include "raylab/core/error.h"
 #include "raylab/io/atomic_file.h"
+#include "raylab/io/file_extension.h"
+#include "raylab/io/heatmap.h"
 #include "raylab/io/image_io.h"
 #include "raylab/io/scene_loader.h"
 #include "raylab/render/adaptive.h"
@@ -103,9 +107,34 @@ std::vector<std::string> sampler_choices() {
   return names;
 }
 
-// The image, and the sample-count outputs asked for by --aov samples.
+bool wants_samples_aov(const RenderArgs& args) {
+  return std::find(args.aovs.begin(), args.aovs.end(), "samples") != args.aovs.end();
+}
+
+// OUTPUT with its extension replaced by `suffix` ("render.png" -> "render.samples.png").
+std::string beside_output(const std::string& output, const std::string& suffix) {
+  const std::filesystem::path p(output);
+  return (p.parent_path() / p.stem()).string() + suffix;
+}
+
+// The image, and the sample-count outputs asked for by --aov samples: an EXR layer (in the
+// output itself when it is an EXR, else in OUTPUT.samples.exr) and a false-colour PNG.
 void write_outputs(const RenderArgs& args, const Film& film, const RenderResult& result) {
-  write_image(film, args.output);
+  if (!wants_samples_aov(args)) {
+    write_image(film, args.output);
+    return;
+  }
+  ImageLayer layer{"samples.Y", {}};
+  layer.values.assign(result.samples_per_pixel.begin(), result.samples_per_pixel.end());
+  const std::vector<ImageLayer> layers{layer};
+  if (lowercase_extension(args.output) == ".exr") {
+    write_image(film, args.output, layers);
+  } else {
+    write_image(film, args.output);
+    write_image(film, beside_output(args.output, ".samples.exr"), layers);
+  }
+  write_sample_count_png(result.samples_per_pixel, film.width(), film.height(),
+                         beside_output(args.output, ".samples.png"));
 }
 
 int run(const RenderArgs& args) {
@@ -118,6 +147,10 @@ int run(const RenderArgs& args) {
   }
   check_image_extension(args.output);  // usage error before any work
   check_writable(args.output);         // input error before any work
+  if (wants_samples_aov(args)) {
+    check_writable(beside_output(args.output, ".samples.png"));
+    if (lowercase_extension(args.output) != ".exr") check_writable(beside_output(args.output, ".samples.exr"));
+  }
   LoadOptions load;
   load.allow_outside_paths = args.allow_outside_paths;
   Scene scene = load_scene(args.scene, load);
@@ -205,7 +238,7 @@ CommandRunner add_render_command(CLI::App& app) {
   cmd->add_option("--height", args->height, "Image height in pixels")->check(CLI::Range(1, 32768));
   cmd->add_option("--spp", args->spp,
                   "Samples per pixel; a count the sampler cannot use is rounded with a notice. Adaptive "
-                  "samplers: the most samples a pixel may get (sets --aa-depth to ceil(log4 spp))")
+                  "samplers: the most samples a pixel may get (sets --aa-depth to floor(log4 spp))")
       ->check(CLI::Range(1, 1 << 16));
   cmd->add_option("--sampler", args->sampler,
                   "Sample placement: auto (center at 1 spp, else jittered), center, regular, random, jittered, "

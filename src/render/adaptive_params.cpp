@@ -17,6 +17,12 @@ std::span<const std::string_view> adaptive_sampler_names() { return kNames; }
 
 bool is_adaptive_sampler(std::string_view name) { return name == kNames[0] || name == kNames[1]; }
 
+int adaptive_depth_for_spp(int spp) {
+  int depth = 0;
+  while (depth < 8 && (1 << (2 * (depth + 1))) <= spp) ++depth;
+  return depth;
+}
+
 AdaptiveParams adaptive_params(std::string_view name, const RenderSettings& settings) {
   AdaptiveParams p;
   if (name == "adaptive-corners") p.depth = 2;
@@ -24,8 +30,7 @@ AdaptiveParams adaptive_params(std::string_view name, const RenderSettings& sett
   if (settings.aa_depth >= 0) {
     p.depth = settings.aa_depth;
   } else if (settings.spp > 1) {
-    // --spp is the most samples a pixel may hold: 4^depth cells.
-    p.depth = static_cast<int>(std::ceil(std::log2(static_cast<double>(settings.spp)) / 2.0 - 1e-9));
+    p.depth = adaptive_depth_for_spp(settings.spp);
   }
   return p;
 }

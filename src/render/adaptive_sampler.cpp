@@ -9,11 +9,14 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <memory>
 #include <vector>
 
 #include "raylab/render/adaptive.h"
-#include "raylab/sampling/pixel_sampler.h"
+#include "raylab/sampling/pixel_sampler.h"  // Sample2
 #include "render_workers.h"
+#include "small_objects.h"
 #include "sample_contrast.h"
 
 namespace raylab {
@@ -26,8 +29,45 @@ constexpr int kMaxDepth = 8;
 // Levels every refined pixel gets regardless of what it finds: 4 x 4 strata, the stratification
 // of 16-spp jittered sampling; deeper levels only where a quarter's samples still differ.
 constexpr int kRefinedLevels = 2;
-// Refined pixels are handed to the workers in chunks of this many (load balance vs overhead).
-constexpr int kChunk = 32;
+// The first two levels take their 16 positions from a multi-jittered pattern (Chiu, Shirley and
+// Wang 1994): one sample in each of the 4 x 4 cells like jittered sampling, and one in each of
+// the 16 columns and 16 rows of width 1/16 as well, which halves the error on edges near the
+// axes. Sample i lies in cell (i % 4, i / 4).
+constexpr int kPatternSize = 16;
+constexpr int kPatternLevels = 2;
+
+// The 24 orderings of 0..3.
+constexpr std::array<std::array<std::uint8_t, 4>, 24> kPermutations4 = {{
+    {0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {0, 3, 2, 1},
+    {1, 0, 2, 3}, {1, 0, 3, 2}, {1, 2, 0, 3}, {1, 2, 3, 0}, {1, 3, 0, 2}, {1, 3, 2, 0},
+    {2, 0, 1, 3}, {2, 0, 3, 1}, {2, 1, 0, 3}, {2, 1, 3, 0}, {2, 3, 0, 1}, {2, 3, 1, 0},
+    {3, 0, 1, 2}, {3, 0, 2, 1}, {3, 1, 0, 2}, {3, 1, 2, 0}, {3, 2, 0, 1}, {3, 2, 1, 0}}};
+
+// A pixel's multi-jittered pattern: per column of cells a random ordering of the four
+// sub-columns its cells use, per row of cells one of the four sub-rows, and a uniform offset in
+// each sample's 1/16 x 1/16 square. Each sample is computable on its own.
+class MultiJitteredPattern {
+ public:
+  MultiJitteredPattern(std::uint64_t seed, int px, int py)
+      : m_key(hash_seed(seed ^ 0x3a17ull, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py))) {}
+
+  Sample2 sample(int i) const {
+    const int cx = i & 3;
+    const int cy = i >> 2;
+    // Eight 5-bit fields of the key pick the orderings of the 4 columns and the 4 rows.
+    const auto& column_order = kPermutations4[((m_key >> (5 * cx)) & 31u) % 24u];
+    const auto& row_order = kPermutations4[((m_key >> (20 + 5 * cy)) & 31u) % 24u];
+    Pcg32 rng(m_key ^ mix64(static_cast<std::uint64_t>(i) + 1u));
+    const float u = rng.next_float();
+    const float v = rng.next_float();
+    const float x = (static_cast<float>(4 * cx + column_order[static_cast<std::size_t>(cy)]) + u) * (1.f / 16.f);
+    const float y = (static_cast<float>(4 * cy + row_order[static_cast<std::size_t>(cx)]) + v) * (1.f / 16.f);
+    return {std::min(x, 0x1.fffffep-1f), std::min(y, 0x1.fffffep-1f)};
+  }
+
+ private:
+  std::uint64_t m_key;
+};
 
 // One traced sample: its colour, as displayed, and what it hit.
 struct TracedSample {
@@ -42,8 +82,9 @@ class DifferenceTest {
  public:
   explicit DifferenceTest(const AdaptiveParams& p) : m_threshold(p.threshold), m_cosine(p.normal_cosine) {}
 
+  /// Whether samples get(0) .. get(n - 1) differ; with `colour` false, only in object or normal.
   template <class Get>
-  bool differ(int n, Get&& get) const {
+  bool differ(int n, Get&& get, bool colour = true) const {
     if (n < 2) return false;
     detail::ContrastRange range;
     const std::int32_t object = get(0).feature.object;
@@ -52,8 +93,16 @@ class DifferenceTest {
       if (s.feature.object != object) return true;
       range.add(s.display);
     }
-    if (range.contrast() > m_threshold) return true;
+    if (colour && range.contrast() > m_threshold) return true;
     if (object < 0) return false;  // all background: no normals to compare
+    // On a flat surface every normal is the same: skip the pairwise comparison.
+    const Vec3 n0 = get(0).feature.normal;
+    bool same = true;
+    for (int i = 1; i < n && same; ++i) {
+      const Vec3 ni = get(i).feature.normal;
+      same = ni.x == n0.x && ni.y == n0.y && ni.z == n0.z;
+    }
+    if (same) return false;
     for (int i = 0; i < n; ++i) {
       for (int j = i + 1; j < n; ++j) {
         if (dot(get(i).feature.normal, get(j).feature.normal) < m_cosine) return true;
@@ -75,6 +124,12 @@ struct CellSample {
   TracedSample s;
 };
 
+// The cell of `level` that position u (in [0, 1)) falls in.
+int cell_of(float u, int level) {
+  const int cells = 1 << level;
+  return std::clamp(static_cast<int>(u * static_cast<float>(cells)), 0, cells - 1);
+}
+
 class AdaptiveRenderer {
  public:
   AdaptiveRenderer(const Scene& scene, Film& film, const AdaptiveParams& params)
@@ -82,11 +137,14 @@ class AdaptiveRenderer {
         m_depth(std::clamp(params.depth, 0, kMaxDepth)), m_test(params), m_seed(scene.settings.seed),
         m_base(std::size_t(film.width()) * film.height()) {}
 
-  // The base sample of every pixel of tile `r` (cell 0 of level 0: anywhere in the pixel).
+  const Camera& camera() const { return m_camera; }
+
+  // The base sample of every pixel of tile `r`: one of the pixel's 16 pattern samples, chosen at
+  // random, so on its own it is a uniformly jittered sample.
   void trace_base(const TraceContext& ctx, const PixelRect& r) {
     for (int py = r.y0; py < r.y1; ++py) {
       for (int px = r.x0; px < r.x1; ++px) {
-        const CellSample c = sample_in_cell(ctx, px, py, 0, 0, 0);
+        const CellSample c = pattern_sample(ctx, px, py, base_index(px, py), 0);
         m_base[index(px, py)] = c.s;
         m_film.at(px, py) = c.s.color;
       }
@@ -109,15 +167,47 @@ class AdaptiveRenderer {
   // its own samples differ (then its neighbours are refined too).
   int refine_pixel(const TraceContext& ctx, int px, int py, std::vector<CellSample>& samples, bool& found) const {
     samples.clear();
+    const int b = base_index(px, py);
     CellSample base;
     base.s = m_base[index(px, py)];
-    base.x = base_position(px, py).x;
-    base.y = base_position(px, py).y;
+    const MultiJitteredPattern pattern_of_pixel(m_seed, px, py);
+    const Sample2 bu = pattern_of_pixel.sample(b);
+    base.x = bu.x;
+    base.y = bu.y;
     samples.push_back(base);
     if (m_depth >= 1) {
-      std::array<int, 4> quarters = split(ctx, px, py, samples, 0);
-      for (int q : quarters) {
-        if (m_depth >= kRefinedLevels) refine_cell(ctx, px, py, samples, split(ctx, px, py, samples, q));
+      std::array<Sample2, kPatternSize> pattern;
+      for (int i = 0; i < kPatternSize; ++i) pattern[static_cast<std::size_t>(i)] = pattern_of_pixel.sample(i);
+      // Level 1: one pattern sample in each quarter (the base sample's quarter keeps it).
+      const int levels = std::min(m_depth, kPatternLevels);
+      std::array<bool, kPatternSize> used{};
+      used[static_cast<std::size_t>(b)] = true;
+      std::array<bool, 4> quarter_done{};
+      quarter_done[static_cast<std::size_t>(quarter(bu))] = true;
+      for (int k = 1; k < kPatternSize; ++k) {
+        const int i = (b + k) % kPatternSize;
+        const Sample2 u = pattern[static_cast<std::size_t>(i)];
+        if (quarter_done[static_cast<std::size_t>(quarter(u))]) continue;
+        quarter_done[static_cast<std::size_t>(quarter(u))] = true;
+        samples.push_back(trace_at(ctx, px, py, u, 1, static_cast<std::uint64_t>(i)));
+        used[static_cast<std::size_t>(i)] = true;
+      }
+      samples[0].level = 1;
+      samples[0].cx = cell_of(samples[0].x, 1);
+      samples[0].cy = cell_of(samples[0].y, 1);
+      if (levels >= 2) {
+        // Level 2: the rest of the pattern, one sample in each of the 4 x 4 strata.
+        for (CellSample& c : samples) {
+          c.level = 2;
+          c.cx = cell_of(c.x, 2);
+          c.cy = cell_of(c.y, 2);
+        }
+        for (int i = 0; i < kPatternSize; ++i) {
+          if (!used[static_cast<std::size_t>(i)]) {
+            samples.push_back(trace_at(ctx, px, py, pattern[static_cast<std::size_t>(i)], 2, static_cast<std::uint64_t>(i)));
+          }
+        }
+        if (m_depth > kPatternLevels) refine_quarters(ctx, px, py, samples);
       }
     }
     Color sum{0.f};
@@ -133,50 +223,84 @@ class AdaptiveRenderer {
   std::size_t index(int px, int py) const { return std::size_t(py) * m_film.width() + px; }
 
  private:
-  // The cell's random position and path seed come from (seed, pixel, cell): deterministic.
-  std::uint64_t cell_key(int level, int cx, int cy) const {
-    return (std::uint64_t(level) << 40) | (std::uint64_t(cy) << 20) | std::uint64_t(cx);
+  static int quarter(Sample2 u) { return (u.x >= 0.5f ? 1 : 0) + (u.y >= 0.5f ? 2 : 0); }
+
+  int base_index(int px, int py) const {
+    return static_cast<int>(hash_seed(m_seed ^ 0xba5eull, static_cast<std::uint64_t>(px),
+                                      static_cast<std::uint64_t>(py)) % kPatternSize);
   }
 
-  Sample2 position_in_cell(int px, int py, int level, int cx, int cy) const {
-    Pcg32 rng(hash_seed(m_seed, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py),
-                        cell_key(level, cx, cy)));
-    const float side = std::ldexp(1.f, -level);
-    const float u = rng.next_float();
-    const float v = rng.next_float();
-    // Clamped so that float rounding never puts the sample in the next cell.
-    return {std::min((static_cast<float>(cx) + u) * side, std::nextafter((static_cast<float>(cx) + 1.f) * side, 0.f)),
-            std::min((static_cast<float>(cy) + v) * side, std::nextafter((static_cast<float>(cy) + 1.f) * side, 0.f))};
+  std::uint64_t path_seed(int px, int py, std::uint64_t key) const {
+    return hash_seed(m_seed ^ 0xada9717eull, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py), key);
   }
 
-  Sample2 base_position(int px, int py) const { return position_in_cell(px, py, 0, 0, 0); }
-
-  CellSample sample_in_cell(const TraceContext& ctx, int px, int py, int level, int cx, int cy) const {
+  CellSample trace_at(const TraceContext& ctx, int px, int py, Sample2 u, int level, std::uint64_t key) const {
     CellSample c;
     c.level = level;
-    c.cx = cx;
-    c.cy = cy;
-    const Sample2 u = position_in_cell(px, py, level, cx, cy);
+    c.cx = cell_of(u.x, level);
+    c.cy = cell_of(u.y, level);
     c.x = u.x;
     c.y = u.y;
-    c.s.color = detail::trace_image_position(
-        ctx, m_camera, static_cast<float>(px) + u.x, static_cast<float>(py) + u.y,
-        hash_seed(m_seed ^ 0xada9717eull, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py),
-                  cell_key(level, cx, cy)),
-        &c.s.feature);
+    c.s.color = detail::trace_image_position(ctx, m_camera, static_cast<float>(px) + u.x,
+                                             static_cast<float>(py) + u.y, path_seed(px, py, key), &c.s.feature);
     c.s.display = detail::display_encoded(c.s.color);
     return c;
   }
 
+  // Sample `i` of the pixel's 16-sample pattern, standing for a cell of `level`.
+  CellSample pattern_sample(const TraceContext& ctx, int px, int py, int i, int level) const {
+    return trace_at(ctx, px, py, MultiJitteredPattern(m_seed, px, py).sample(i), level, static_cast<std::uint64_t>(i));
+  }
+
+  // A jittered sample in cell (level, cx, cy) (levels beyond the pattern).
+  CellSample jittered_sample(const TraceContext& ctx, int px, int py, int level, int cx, int cy) const {
+    const std::uint64_t key = (std::uint64_t(level) << 40) | (std::uint64_t(cy) << 20) | std::uint64_t(cx);
+    Pcg32 rng(hash_seed(m_seed, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py), key));
+    const float side = std::ldexp(1.f, -level);
+    const float u = rng.next_float();
+    const float v = rng.next_float();
+    // Clamped so that float rounding never puts the sample in the next cell.
+    const Sample2 p{std::min((static_cast<float>(cx) + u) * side, std::nextafter((static_cast<float>(cx) + 1.f) * side, 0.f)),
+                    std::min((static_cast<float>(cy) + v) * side, std::nextafter((static_cast<float>(cy) + 1.f) * side, 0.f))};
+    CellSample c = trace_at(ctx, px, py, p, level, key);
+    c.cx = cx;
+    c.cy = cy;
+    return c;
+  }
+
+  // After the 4 x 4 level: each quarter whose four samples see different objects or normals
+  // (a silhouette, a crease, a small object) is split further, and so on inside it, down to the
+  // depth limit. Colour alone (texture, shadow, reflection) stops at 4 x 4: an edge's error lies
+  // in the few sub-cells it crosses, so each deeper sample there pays, while detail that varies
+  // across the whole pixel would need every sub-cell split for the same gain.
+  void refine_quarters(const TraceContext& ctx, int px, int py, std::vector<CellSample>& samples) const {
+    std::array<std::array<int, 4>, 4> quarters{};
+    for (int i = 0; i < static_cast<int>(samples.size()); ++i) {
+      const CellSample& c = samples[static_cast<std::size_t>(i)];
+      const int q = (c.cx >> 1) + 2 * (c.cy >> 1);
+      const int child = (c.cx & 1) + 2 * (c.cy & 1);
+      quarters[static_cast<std::size_t>(q)][static_cast<std::size_t>(child)] = i;
+    }
+    for (const std::array<int, 4>& quarter : quarters) refine_cell(ctx, px, py, samples, quarter);
+  }
+
+  bool geometry_differs(const std::vector<CellSample>& samples, const std::array<int, 4>& children) const {
+    return m_test.differ(
+        4,
+        [&](int i) -> const TracedSample& {
+          return samples[static_cast<std::size_t>(children[static_cast<std::size_t>(i)])].s;
+        },
+        /*colour=*/false);
+  }
+
   // Splits the cell of samples[k] into its four children: the sample keeps its place in the
-  // child it lies in, the other three children get new samples. Returns the four samples'
-  // indices (child order: (0,0), (1,0), (0,1), (1,1)).
+  // child it lies in, the other three children get new jittered samples. Returns the four
+  // samples' indices (child order: (0,0), (1,0), (0,1), (1,1)).
   std::array<int, 4> split(const TraceContext& ctx, int px, int py, std::vector<CellSample>& samples, int k) const {
     const CellSample parent = samples[static_cast<std::size_t>(k)];
     const int level = parent.level + 1;
-    const float cells = std::ldexp(1.f, level);
-    const int kx = std::clamp(static_cast<int>(parent.x * cells), 2 * parent.cx, 2 * parent.cx + 1);
-    const int ky = std::clamp(static_cast<int>(parent.y * cells), 2 * parent.cy, 2 * parent.cy + 1);
+    const int kx = std::clamp(cell_of(parent.x, level), 2 * parent.cx, 2 * parent.cx + 1);
+    const int ky = std::clamp(cell_of(parent.y, level), 2 * parent.cy, 2 * parent.cy + 1);
     std::array<int, 4> out{};
     for (int child = 0; child < 4; ++child) {
       const int cx = 2 * parent.cx + (child & 1);
@@ -188,22 +312,19 @@ class AdaptiveRenderer {
         kept.cy = cy;
         out[static_cast<std::size_t>(child)] = k;
       } else {
-        samples.push_back(sample_in_cell(ctx, px, py, level, cx, cy));
+        samples.push_back(jittered_sample(ctx, px, py, level, cx, cy));
         out[static_cast<std::size_t>(child)] = static_cast<int>(samples.size()) - 1;
       }
     }
     return out;
   }
 
-  // A cell whose four children hold one sample each: where they differ and depth allows, split
-  // every child and look again inside each.
+  // A cell whose four children hold one sample each: where they see different geometry and
+  // depth allows, split every child and look again inside each.
   void refine_cell(const TraceContext& ctx, int px, int py, std::vector<CellSample>& samples,
                    const std::array<int, 4>& children) const {
     if (samples[static_cast<std::size_t>(children[0])].level >= m_depth) return;
-    const bool differ = m_test.differ(4, [&](int i) -> const TracedSample& {
-      return samples[static_cast<std::size_t>(children[static_cast<std::size_t>(i)])].s;
-    });
-    if (!differ) return;
+    if (!geometry_differs(samples, children)) return;
     for (int child : children) refine_cell(ctx, px, py, samples, split(ctx, px, py, samples, child));
   }
 
@@ -246,61 +367,53 @@ RenderResult render_adaptive(const Scene& scene, const Accelerator& accel, Film&
     progress(long(r.x1 - r.x0) * (r.y1 - r.y0));
   });
 
-  // Pixels whose neighbourhood differs start the refinement.
-  std::vector<unsigned char> state(pixels, 0);  // 0: base only, 1: queued, 2: refined
-  std::vector<unsigned char> found(pixels, 0);
-  std::vector<int> queue;
+  // Pixels whose neighbourhood differs, and the footprints of objects small enough to fall
+  // between base samples, start the refinement.
+  std::vector<std::atomic<unsigned char>> claimed(pixels);  // queued or refined
+  std::vector<int> seeds;
   if (params.depth > 0) {
     std::vector<unsigned char> flagged(pixels, 0);
     workers.for_each(h, [&](int y, const TraceContext&) {
       for (int x = 0; x < w; ++x) flagged[renderer.index(x, y)] = renderer.neighbourhood_differs(x, y) ? 1 : 0;
     });
+    for (const PixelRect& r : detail::small_object_footprints(scene, renderer.camera(), w, h, params.small_object_pixels)) {
+      for (int y = r.y0; y < r.y1; ++y) {
+        for (int x = r.x0; x < r.x1; ++x) flagged[renderer.index(x, y)] = 1;
+      }
+    }
     for (std::size_t i = 0; i < pixels; ++i) {
       if (flagged[i]) {
-        queue.push_back(static_cast<int>(i));
-        state[i] = 1;
+        seeds.push_back(static_cast<int>(i));
+        claimed[i].store(1, std::memory_order_relaxed);
       }
     }
   }
-  // Refine in rounds; each round queues the unrefined neighbours of the pixels whose own samples
-  // differed, so a thin line missed by the base samples is followed from where it was found.
-  // The final set does not depend on the order, only on the samples, so the image is
+  total.fetch_add(static_cast<long>(seeds.size()), std::memory_order_relaxed);
+  // Refinement spreads: a refined pixel whose own samples differ queues its unrefined
+  // neighbours, so a thin line missed by the base samples is followed from wherever it was
+  // found. The set refined is the closure of the seeds under that rule, whatever the order the
+  // workers take pixels in, and each pixel's samples depend only on the pixel: the image is
   // deterministic.
-  while (!queue.empty()) {
-    total.fetch_add(static_cast<long>(queue.size()), std::memory_order_relaxed);
-    const int chunks = static_cast<int>((queue.size() + kChunk - 1) / kChunk);
-    workers.for_each(chunks, [&](int c, const TraceContext& ctx) {
-      thread_local std::vector<CellSample> samples;
-      const std::size_t begin = std::size_t(c) * kChunk;
-      const std::size_t end = std::min(queue.size(), begin + kChunk);
-      for (std::size_t k = begin; k < end; ++k) {
-        const int i = queue[k];
-        bool differs = false;
-        counts[static_cast<std::size_t>(i)] =
-            static_cast<std::uint32_t>(renderer.refine_pixel(ctx, i % w, i / w, samples, differs));
-        found[static_cast<std::size_t>(i)] = differs ? 1 : 0;
-      }
-      progress(static_cast<long>(end - begin));
-    });
-    std::vector<int> next;
-    for (int i : queue) state[static_cast<std::size_t>(i)] = 2;
-    for (int i : queue) {
-      if (!found[static_cast<std::size_t>(i)]) continue;
-      const int px = i % w;
-      const int py = i / w;
+  workers.for_each_growing(seeds, [&](int i, const TraceContext& ctx, auto&& add) {
+    thread_local std::vector<CellSample> samples;
+    const int px = i % w;
+    const int py = i / w;
+    bool differs = false;
+    counts[static_cast<std::size_t>(i)] = static_cast<std::uint32_t>(renderer.refine_pixel(ctx, px, py, samples, differs));
+    if (differs) {
       for (int y = std::max(0, py - 1); y <= std::min(h - 1, py + 1); ++y) {
         for (int x = std::max(0, px - 1); x <= std::min(w - 1, px + 1); ++x) {
           const std::size_t j = renderer.index(x, y);
-          if (state[j] == 0) {
-            state[j] = 1;
-            next.push_back(static_cast<int>(j));
+          unsigned char expected = 0;
+          if (claimed[j].compare_exchange_strong(expected, 1, std::memory_order_relaxed)) {
+            total.fetch_add(1, std::memory_order_relaxed);
+            add(static_cast<int>(j));
           }
         }
       }
     }
-    std::sort(next.begin(), next.end());
-    queue = std::move(next);
-  }
+    progress(1);
+  });
 
   RenderResult result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

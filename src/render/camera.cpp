@@ -31,4 +31,16 @@ Ray Camera::generate(float x, float y) const {
   return r;
 }
 
+bool Camera::project(Vec3 p, float& x, float& y) const {
+  const Vec3 d = p - m_origin;
+  const float depth = dot(d, m_forward);
+  if (!(depth > 0.f)) return false;
+  // m_top_left + m_dx x + m_dy y is the point at depth 1 on the ray through (x, y), and m_dx,
+  // m_dy are perpendicular to each other and to the view direction.
+  const Vec3 q = d / depth - m_top_left;
+  x = dot(q, m_dx) / dot(m_dx, m_dx);
+  y = dot(q, m_dy) / dot(m_dy, m_dy);
+  return true;
+}
+
 }  // namespace raylab

@@ -10,6 +10,7 @@
 #include <numeric>
 
 #include "raylab/core/error.h"
+#include "raylab/render/adaptive.h"
 #include "raylab/render/image_metrics.h"
 #include "raylab/render/renderer.h"
 #include "raylab/sampling/filter.h"
@@ -257,6 +258,8 @@ QualityResult run_quality_study(const Scene& scene, const Accelerator& accel, co
     QualityRow& row = result.rows[p.row];
     work.settings.sampler = row.sampler;
     work.settings.spp = row.budget;
+    // An adaptive sampler's budget is the most samples a pixel may take: 4^depth.
+    if (is_adaptive_sampler(row.sampler)) work.settings.aa_depth = adaptive_depth_for_spp(row.budget);
     work.settings.seed = static_cast<std::uint64_t>(p.seed);
     RenderOptions ro;
     ro.threads = options.threads;
@@ -299,25 +302,64 @@ QualityResult run_quality_study(const Scene& scene, const Accelerator& accel, co
 }
 
 std::optional<BarRatios> bar_ratios(const QualityResult& result, std::string_view sampler, std::string_view baseline,
-                                    int budget) {
-  const QualityRow* a = result.find(sampler, budget);
-  const QualityRow* b = result.find(baseline, budget);
-  if (!a || !b) return std::nullopt;
+                                    int baseline_budget) {
+  const QualityRow* b = result.find(baseline, baseline_budget);
+  if (!b) return std::nullopt;
+  std::vector<const QualityRow*> rows;
+  for (const QualityRow& r : result.rows) {
+    if (r.sampler == sampler) rows.push_back(&r);
+  }
+  if (rows.empty()) return std::nullopt;
+  std::sort(rows.begin(), rows.end(),
+            [](const QualityRow* x, const QualityRow* y) { return x->rays_per_pixel < y->rays_per_pixel; });
+  const QualityRow* a = nullptr;
+  for (const QualityRow* r : rows) {
+    if (r->rmse <= b->rmse) {
+      a = r;
+      break;
+    }
+  }
+  if (!a) {
+    a = *std::min_element(rows.begin(), rows.end(),
+                          [](const QualityRow* x, const QualityRow* y) { return x->rmse < y->rmse; });
+  }
   auto ratio = [](double x, double y) { return y > 0.0 ? x / y : (x > 0.0 ? INFINITY : 1.0); };
   BarRatios r;
   r.sampler = a->sampler;
   r.baseline = b->sampler;
-  r.budget = budget;
+  r.budget = a->budget;
+  r.baseline_budget = b->budget;
   r.rays = ratio(a->rays_per_pixel, b->rays_per_pixel);
   r.rmse = ratio(a->rmse, b->rmse);
   r.p999 = ratio(a->p999, b->p999);
   r.time = ratio(a->seconds, b->seconds);
+  // Time to reach the baseline's RMSE: walk the rows by time; interpolate in log-log between
+  // the last row above the target and the first at or below it.
+  std::sort(rows.begin(), rows.end(), [](const QualityRow* x, const QualityRow* y) { return x->seconds < y->seconds; });
+  r.time_at_equal_rmse = NAN;
+  const double target = b->rmse;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (rows[i]->rmse > target) continue;
+    double t = rows[i]->seconds;
+    if (i > 0) {
+      const QualityRow& hi = *rows[i - 1];  // errs more, cheaper
+      const QualityRow& lo = *rows[i];
+      if (hi.rmse > 0.0 && lo.rmse > 0.0 && hi.seconds > 0.0 && lo.seconds > 0.0 && hi.rmse != lo.rmse) {
+        const double f = (std::log(target) - std::log(hi.rmse)) / (std::log(lo.rmse) - std::log(hi.rmse));
+        t = std::exp(std::log(hi.seconds) + f * (std::log(lo.seconds) - std::log(hi.seconds)));
+      }
+    }
+    r.time_at_equal_rmse = ratio(t, b->seconds);
+    break;
+  }
   return r;
 }
 
 std::string format_bar_ratios(const BarRatios& r) {
-  return fmt::format("{} vs {} at {} spp: primary rays x{:.3f}, RMSE x{:.3f}, p99.9 x{:.3f}, time x{:.3f}", r.sampler,
-                     r.baseline, r.budget, r.rays, r.rmse, r.p999, r.time);
+  return fmt::format(
+      "{} (budget {}) vs {} at {} spp: primary rays x{:.3f}, RMSE x{:.3f}, p99.9 x{:.3f}, time x{:.3f}, time at "
+      "equal RMSE x{:.3f}",
+      r.sampler, r.budget, r.baseline, r.baseline_budget, r.rays, r.rmse, r.p999, r.time, r.time_at_equal_rmse);
 }
 
 std::string format_quality_table(const QualityResult& result, const std::string& scene_name) {
@@ -373,9 +415,9 @@ std::string format_quality_json(const QualityResult& result, const std::string& 
   if (const std::optional<BarRatios> b = bar_ratios(result)) {
     out += fmt::format(
         ",\n  \"bar\": {{\"sampler\": {}, \"baseline\": {}, \"budget\": {}, \"rays_ratio\": {}, \"rmse_ratio\": {}, "
-        "\"p999_ratio\": {}, \"time_ratio\": {}}}",
+        "\"p999_ratio\": {}, \"time_ratio\": {}, \"time_at_equal_rmse_ratio\": {}, \"baseline_budget\": {}}}",
         json_string(b->sampler), json_string(b->baseline), b->budget, json_number(b->rays), json_number(b->rmse),
-        json_number(b->p999), json_number(b->time));
+        json_number(b->p999), json_number(b->time), json_number(b->time_at_equal_rmse), b->baseline_budget);
   }
   return out + "\n}\n";
 }

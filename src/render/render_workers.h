@@ -6,9 +6,11 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_for_each.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <vector>
 
 #include "raylab/core/rng.h"
 #include "raylab/render/camera.h"
@@ -61,6 +63,18 @@ class RenderWorkers {
       tbb::parallel_for(tbb::blocked_range<int>(0, count, 1), [&](const tbb::blocked_range<int>& range) {
         const TraceContext ctx{m_scene, m_accel, m_stats.local(), m_count};
         for (int i = range.begin(); i != range.end(); ++i) fn(i, ctx);
+      });
+    });
+  }
+
+  /// Calls `fn(item, ctx, add)` for every item of `items` and for every item that a call passes
+  /// to `add(item)`, in parallel with work stealing: for work that discovers more work.
+  template <class Fn>
+  void for_each_growing(const std::vector<int>& items, Fn&& fn) {
+    m_arena.execute([&] {
+      tbb::parallel_for_each(items.begin(), items.end(), [&](int item, tbb::feeder<int>& feeder) {
+        const TraceContext ctx{m_scene, m_accel, m_stats.local(), m_count};
+        fn(item, ctx, [&feeder](int more) { feeder.add(more); });
       });
     });
   }

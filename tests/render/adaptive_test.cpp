@@ -163,8 +163,12 @@ TEST(AdaptiveSampler, AnyEdgeRefinementLiesBetweenTheCrossedPixelsAndTheirNeighb
     const Outcome out = render_with(scene, "adaptive", 2);
     for (std::size_t i = 0; i < crossed.size(); ++i) {
       const bool refined = out.result.samples_per_pixel[i] > 1u;
-      if (crossed[i]) EXPECT_TRUE(refined) << "crossed pixel " << i % kWidth << "," << i / kWidth << " missed";
-      if (!around[i]) EXPECT_FALSE(refined) << "pixel " << i % kWidth << "," << i / kWidth << " is far from the edge";
+      if (crossed[i]) {
+        EXPECT_TRUE(refined) << "crossed pixel " << i % kWidth << "," << i / kWidth << " missed";
+      }
+      if (!around[i]) {
+        EXPECT_FALSE(refined) << "pixel " << i % kWidth << "," << i / kWidth << " is far from the edge";
+      }
     }
   }
 }

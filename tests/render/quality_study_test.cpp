@@ -212,11 +212,28 @@ TEST(QualityStudy, BarRatiosAndReports) {
   EXPECT_DOUBLE_EQ(b->rmse, 0.75);
   EXPECT_DOUBLE_EQ(b->p999, 0.5);
   EXPECT_DOUBLE_EQ(b->time, 0.25);
+  EXPECT_DOUBLE_EQ(b->time_at_equal_rmse, 0.25);  // one row, below the target: its time bounds it
   EXPECT_EQ(format_bar_ratios(*b),
-            "adaptive vs jittered at 16 spp: primary rays x0.250, RMSE x0.750, p99.9 x0.500, "
-            "time x0.250");
+            "adaptive (budget 16) vs jittered at 16 spp: primary rays x0.250, RMSE x0.750, p99.9 x0.500, "
+            "time x0.250, time at equal RMSE x0.250");
   EXPECT_FALSE(bar_ratios(r, "adaptive", "jittered", 4));
   EXPECT_FALSE(bar_ratios(r, "sobol"));
+
+  // A cheaper adaptive row that errs more: the time at equal RMSE lies between the two rows,
+  // log-log; the row compared stays the cheapest one that errs no more than the baseline.
+  QualityResult r2 = r;
+  r2.rows.push_back(QualityRow{"adaptive", 4, 4, 2, 2.0, 0.2, 0.08, 0.07, 0.09, 0.01, 25.0, 0.8, 0.6});
+  const std::optional<BarRatios> b2 = bar_ratios(r2);
+  ASSERT_TRUE(b2);
+  EXPECT_EQ(b2->budget, 16);
+  const double f = (std::log(0.04) - std::log(0.08)) / (std::log(0.03) - std::log(0.08));
+  EXPECT_NEAR(b2->time_at_equal_rmse, std::exp(std::log(0.2) + f * (std::log(0.5) - std::log(0.2))) / 2.0, 1e-12);
+  // No row reaches the baseline: the lowest-RMSE row is compared and the time is NaN.
+  r2.rows[2].rmse = 0.05;
+  const std::optional<BarRatios> b3 = bar_ratios(r2);
+  ASSERT_TRUE(b3);
+  EXPECT_EQ(b3->budget, 16);
+  EXPECT_TRUE(std::isnan(b3->time_at_equal_rmse));
 
   const std::string table = format_quality_table(r, "demo");
   for (const char* s : {"center", "jittered", "adaptive", "inf"}) EXPECT_NE(table.find(s), std::string::npos) << s;

@@ -29,11 +29,18 @@ struct AdaptiveParams {
   /// adaptive only: a change of shading normal between two samples larger than this angle
   /// (cosine) also triggers refinement.
   float normal_cosine = 0.9f;
+  /// adaptive only: objects whose projection is at most this many pixels wide and tall are
+  /// refined wherever they appear, since base samples a pixel apart can miss them; 0: off.
+  float small_object_pixels = 4.f;
 };
+
+/// The depth that lets a pixel hold at most `spp` samples: floor(log4 spp) (1 -> 0, 4 -> 1,
+/// 16 -> 2, 64 -> 3).
+int adaptive_depth_for_spp(int spp);
 
 /// The parameters a render uses for adaptive sampler `name` under `settings`: aa_threshold and
 /// aa_depth where set (>= 0), otherwise the sampler's defaults; a depth derived from spp
-/// (ceil(log4 spp)) when spp > 1 and aa_depth is not set.
+/// (adaptive_depth_for_spp) when spp > 1 and aa_depth is not set.
 AdaptiveParams adaptive_params(std::string_view name, const RenderSettings& settings);
 
 /// The lecture's adaptive supersampling. Rays go through every pixel corner (shared by the four

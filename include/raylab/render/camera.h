@@ -17,6 +17,10 @@ class Camera {
   /// The primary ray through image position (x, y), with a unit direction (t is distance).
   Ray generate(float x, float y) const;
 
+  /// The image position (x, y) where world point `p` appears; false when `p` is not in front
+  /// of the eye (then x and y are untouched).
+  bool project(Vec3 p, float& x, float& y) const;
+
  private:
   Vec3 m_origin;
   Vec3 m_top_left;  ///< image plane point of image position (0, 0)

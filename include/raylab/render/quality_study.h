@@ -146,23 +146,31 @@ std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t seed = 0xcbf29ce4842
 QualityResult run_quality_study(const Scene& scene, const Accelerator& accel, const Film& reference,
                                 const QualityOptions& options);
 
-/// The sampler against a baseline at one budget, as ratios sampler / baseline: below 1 means
-/// the sampler traces fewer rays, errs less or runs faster.
+/// A sampler against a baseline row, as ratios sampler / baseline: below 1 means the sampler
+/// traces fewer rays, errs less or runs faster.
 struct BarRatios {
   std::string sampler;
   std::string baseline;
-  int budget = 0;
-  double rays = 0.0;  ///< primary rays per pixel
+  int budget = 0;           ///< the sampler row compared (see bar_ratios)
+  int baseline_budget = 0;  ///< the baseline row's budget
+  double rays = 0.0;        ///< primary rays per pixel
   double rmse = 0.0;
   double p999 = 0.0;
   double time = 0.0;  ///< render time (a ratio within one run: machines are shared and noisy)
+  /// Time the sampler needs to reach the baseline's RMSE, over the baseline's time: interpolated
+  /// log-log between the two budgets of the sampler whose RMSE brackets the baseline's; the
+  /// cheapest row's time when every row errs less (an upper bound); NaN when none errs as little.
+  double time_at_equal_rmse = 0.0;
 };
 
-/// The ratios of `sampler` against `baseline` at `budget`, or nothing when either row is missing.
+/// `sampler` against `baseline` at `baseline_budget`: of the sampler's rows (any budget), the
+/// one tracing the fewest rays among those whose RMSE is no higher than the baseline's, else
+/// the one with the lowest RMSE. Nothing when the baseline row or every sampler row is missing.
 std::optional<BarRatios> bar_ratios(const QualityResult& result, std::string_view sampler = "adaptive",
-                                    std::string_view baseline = "jittered", int budget = 16);
+                                    std::string_view baseline = "jittered", int baseline_budget = 16);
 
-/// One line: "adaptive vs jittered at 16 spp: primary rays x0.41, RMSE x0.93, p99.9 x0.88, time x0.52".
+/// One line: "adaptive (budget 64) vs jittered at 16 spp: primary rays x0.410, RMSE x0.930, p99.9 x0.880,
+/// time x0.520, time at equal RMSE x0.450".
 std::string format_bar_ratios(const BarRatios& ratios);
 
 /// The table, aligned, one row per sampler and budget, with a header saying what was measured.
