@@ -89,7 +89,8 @@ TEST_F(Cli, QualityPrintsTheBarRatiosWhenAdaptiveAndJitteredRanAt16) {
           " --samplers jittered,adaptive --cache-dir '" +
           out_file("cache") + "'");
   ASSERT_EQ(r.code, 0) << r.err << r.out;
-  EXPECT_NE(r.out.find("adaptive vs jittered at 16 spp: primary rays x"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(") vs jittered at 16 spp: primary rays x"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("time at equal RMSE x"), std::string::npos) << r.out;
 }
 
 }  // namespace
