@@ -21,7 +21,6 @@ constexpr int kMaxDepth = 8;
 
 struct PointColour {
   Color color;
-  Color display;
 };
 
 // The traced points of one pixel on its (2^depth + 1)^2 lattice; reused across pixels.
@@ -66,7 +65,7 @@ class CornerRenderer {
         ctx, m_camera, static_cast<float>(gx) * scale, static_cast<float>(gy) * scale,
         hash_seed(m_scene.settings.seed ^ 0xc0e7e5ull, static_cast<std::uint64_t>(gx),
                   static_cast<std::uint64_t>(gy), static_cast<std::uint64_t>(m_n)));
-    return {c, detail::display_encoded(c)};
+    return {c};
   }
 
   // Corners of tile `r`: those at (x, y) with x0 <= x < x1 and y0 <= y < y1, plus the image's
@@ -110,10 +109,10 @@ class CornerRenderer {
     const PointColour& c = lattice.at(i, j + s);
     const PointColour& d = lattice.at(i + s, j + s);
     detail::ContrastRange range;
-    range.add(a.display);
-    range.add(b.display);
-    range.add(c.display);
-    range.add(d.display);
+    range.add(a.color);
+    range.add(b.color);
+    range.add(c.color);
+    range.add(d.color);
     const float area = static_cast<float>(s) * static_cast<float>(s);
     if (s == 1 || range.contrast() <= m_threshold) return (a.color + b.color + c.color + d.color) * (0.25f * area);
     const int h = s / 2;

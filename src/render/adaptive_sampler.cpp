@@ -26,6 +26,12 @@ using detail::PixelRect;
 using detail::TileGrid;
 
 constexpr int kMaxDepth = 8;
+// Side and area of a cell of each level, as fractions of the pixel: 2^-level and 4^-level.
+constexpr std::array<float, kMaxDepth + 1> kCellSide = {1.f,        0.5f,        0.25f,        0.125f,       0.0625f,
+                                                        0.03125f,   0.015625f,   0.0078125f,   0.00390625f};
+constexpr std::array<float, kMaxDepth + 1> kCellArea = {1.f,         0.25f,        0.0625f,      0.015625f,
+                                                        0.00390625f, 0.0009765625f, 0.000244140625f, 6.103515625e-05f,
+                                                        1.52587890625e-05f};
 // Levels every refined pixel gets regardless of what it finds: 4 x 4 strata, the stratification
 // of 16-spp jittered sampling; deeper levels only where a quarter's samples still differ.
 constexpr int kRefinedLevels = 2;
@@ -35,6 +41,8 @@ constexpr int kRefinedLevels = 2;
 // axes. Sample i lies in cell (i % 4, i / 4).
 constexpr int kPatternSize = 16;
 constexpr int kPatternLevels = 2;
+// Refined pixels go to the workers in batches of this many.
+constexpr int kBatch = 64;
 
 // The 24 orderings of 0..3.
 constexpr std::array<std::array<std::uint8_t, 4>, 24> kPermutations4 = {{
@@ -69,10 +77,9 @@ class MultiJitteredPattern {
   std::uint64_t m_key;
 };
 
-// One traced sample: its colour, as displayed, and what it hit.
+// One traced sample: its colour and what it hit.
 struct TracedSample {
   Color color;
-  Color display;
   PrimaryFeature feature;
 };
 
@@ -91,7 +98,7 @@ class DifferenceTest {
     for (int i = 0; i < n; ++i) {
       const TracedSample& s = get(i);
       if (s.feature.object != object) return true;
-      range.add(s.display);
+      range.add(s.color);
     }
     if (colour && range.contrast() > m_threshold) return true;
     if (object < 0) return false;  // all background: no normals to compare
@@ -211,7 +218,7 @@ class AdaptiveRenderer {
       }
     }
     Color sum{0.f};
-    for (const CellSample& c : samples) sum += c.s.color * std::ldexp(1.f, -2 * c.level);
+    for (const CellSample& c : samples) sum += c.s.color * kCellArea[static_cast<std::size_t>(c.level)];
     m_film.at(px, py) = sum;
     found = m_test.differ(static_cast<int>(samples.size()),
                           [&](int i) -> const TracedSample& { return samples[static_cast<std::size_t>(i)].s; });
@@ -243,7 +250,6 @@ class AdaptiveRenderer {
     c.y = u.y;
     c.s.color = detail::trace_image_position(ctx, m_camera, static_cast<float>(px) + u.x,
                                              static_cast<float>(py) + u.y, path_seed(px, py, key), &c.s.feature);
-    c.s.display = detail::display_encoded(c.s.color);
     return c;
   }
 
@@ -256,7 +262,7 @@ class AdaptiveRenderer {
   CellSample jittered_sample(const TraceContext& ctx, int px, int py, int level, int cx, int cy) const {
     const std::uint64_t key = (std::uint64_t(level) << 40) | (std::uint64_t(cy) << 20) | std::uint64_t(cx);
     Pcg32 rng(hash_seed(m_seed, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py), key));
-    const float side = std::ldexp(1.f, -level);
+    const float side = kCellSide[static_cast<std::size_t>(level)];
     const float u = rng.next_float();
     const float v = rng.next_float();
     // Clamped so that float rounding never puts the sample in the next cell.
@@ -394,7 +400,7 @@ RenderResult render_adaptive(const Scene& scene, const Accelerator& accel, Film&
   // found. The set refined is the closure of the seeds under that rule, whatever the order the
   // workers take pixels in, and each pixel's samples depend only on the pixel: the image is
   // deterministic.
-  workers.for_each_growing(seeds, [&](int i, const TraceContext& ctx, auto&& add) {
+  workers.for_each_growing(seeds, kBatch, [&](int i, const TraceContext& ctx, auto&& add) {
     thread_local std::vector<CellSample> samples;
     const int px = i % w;
     const int py = i / w;

@@ -312,12 +312,16 @@ std::optional<BarRatios> bar_ratios(const QualityResult& result, std::string_vie
   if (rows.empty()) return std::nullopt;
   std::sort(rows.begin(), rows.end(),
             [](const QualityRow* x, const QualityRow* y) { return x->rays_per_pixel < y->rays_per_pixel; });
+  // The cheapest row that errs no more by both measures, else by RMSE alone.
   const QualityRow* a = nullptr;
   for (const QualityRow* r : rows) {
-    if (r->rmse <= b->rmse) {
+    if (r->rmse <= b->rmse && r->p999 <= b->p999) {
       a = r;
       break;
     }
+  }
+  for (std::size_t i = 0; !a && i < rows.size(); ++i) {
+    if (rows[i]->rmse <= b->rmse) a = rows[i];
   }
   if (!a) {
     a = *std::min_element(rows.begin(), rows.end(),

@@ -68,14 +68,32 @@ class RenderWorkers {
   }
 
   /// Calls `fn(item, ctx, add)` for every item of `items` and for every item that a call passes
-  /// to `add(item)`, in parallel with work stealing: for work that discovers more work.
+  /// to `add(item)`, in parallel with work stealing: for work that discovers more work. Items
+  /// travel in batches of `batch` so that the task overhead stays small next to the work.
   template <class Fn>
-  void for_each_growing(const std::vector<int>& items, Fn&& fn) {
+  void for_each_growing(const std::vector<int>& items, int batch, Fn&& fn) {
+    std::vector<std::vector<int>> batches;
+    for (std::size_t i = 0; i < items.size(); i += static_cast<std::size_t>(batch)) {
+      batches.emplace_back(items.begin() + static_cast<std::ptrdiff_t>(i),
+                           items.begin() + static_cast<std::ptrdiff_t>(std::min(items.size(), i + batch)));
+    }
     m_arena.execute([&] {
-      tbb::parallel_for_each(items.begin(), items.end(), [&](int item, tbb::feeder<int>& feeder) {
-        const TraceContext ctx{m_scene, m_accel, m_stats.local(), m_count};
-        fn(item, ctx, [&feeder](int more) { feeder.add(more); });
-      });
+      tbb::parallel_for_each(batches.begin(), batches.end(),
+                             [&](const std::vector<int>& work, tbb::feeder<std::vector<int>>& feeder) {
+                               const TraceContext ctx{m_scene, m_accel, m_stats.local(), m_count};
+                               std::vector<int> found;
+                               auto add = [&](int more) {
+                                 found.push_back(more);
+                                 if (found.size() >= static_cast<std::size_t>(batch)) {
+                                   feeder.add(std::move(found));
+                                   found.clear();
+                                 }
+                               };
+                               // Breadth first within the batch: what it finds is handed back
+                               // to the pool, where idle threads can take it.
+                               for (int item : work) fn(item, ctx, add);
+                               if (!found.empty()) feeder.add(std::move(found));
+                             });
     });
   }
 

@@ -2,6 +2,7 @@
 // Internal to the render module: the tests adaptive sampling uses to decide that samples differ.
 
 #include <algorithm>
+#include <cmath>
 #include <span>
 
 #include "raylab/core/srgb.h"
@@ -9,22 +10,26 @@
 
 namespace raylab::detail {
 
-/// A colour as the display shows it: each channel through the sRGB curve, in [0, 1]. Contrast is
-/// judged here, where a difference means the same to the eye in dark and bright areas.
-inline Color display_encoded(Color c) { return {linear_to_srgb(c.x), linear_to_srgb(c.y), linear_to_srgb(c.z)}; }
-
-/// Running minimum and maximum of display-encoded colours, per channel.
+/// Running minimum and maximum of linear colours, per channel, and the contrast between them as
+/// the display shows it: each channel through the sRGB curve, where a difference means the same
+/// to the eye in dark and bright areas. The curve is monotonic, so only the two ends of each
+/// channel's range need encoding, not every sample.
 struct ContrastRange {
-  Color lo{2.f, 2.f, 2.f};
-  Color hi{-1.f, -1.f, -1.f};
+  Color lo{INFINITY, INFINITY, INFINITY};
+  Color hi{-INFINITY, -INFINITY, -INFINITY};
 
-  /// Widens the range by `display` (display-encoded).
-  void add(Color display) {
-    lo = {std::min(lo.x, display.x), std::min(lo.y, display.y), std::min(lo.z, display.z)};
-    hi = {std::max(hi.x, display.x), std::max(hi.y, display.y), std::max(hi.z, display.z)};
+  /// Widens the range by linear colour `c`.
+  void add(Color c) {
+    lo = {std::min(lo.x, c.x), std::min(lo.y, c.y), std::min(lo.z, c.z)};
+    hi = {std::max(hi.x, c.x), std::max(hi.y, c.y), std::max(hi.z, c.z)};
   }
-  /// The largest difference in any channel (0 when fewer than two colours were added).
-  float contrast() const { return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 0.f}); }
+  /// The largest display-encoded difference in any channel, in [0, 1] (0 when fewer than two
+  /// colours were added).
+  float contrast() const {
+    if (!(hi.x >= lo.x)) return 0.f;
+    return std::max({linear_to_srgb(hi.x) - linear_to_srgb(lo.x), linear_to_srgb(hi.y) - linear_to_srgb(lo.y),
+                     linear_to_srgb(hi.z) - linear_to_srgb(lo.z), 0.f});
+  }
 };
 
 }  // namespace raylab::detail

@@ -164,8 +164,9 @@ struct BarRatios {
 };
 
 /// `sampler` against `baseline` at `baseline_budget`: of the sampler's rows (any budget), the
-/// one tracing the fewest rays among those whose RMSE is no higher than the baseline's, else
-/// the one with the lowest RMSE. Nothing when the baseline row or every sampler row is missing.
+/// one tracing the fewest rays among those whose RMSE and 99.9th percentile are both no higher
+/// than the baseline's, else among those whose RMSE is no higher, else the one with the lowest
+/// RMSE. Nothing when the baseline row or every sampler row is missing.
 std::optional<BarRatios> bar_ratios(const QualityResult& result, std::string_view sampler = "adaptive",
                                     std::string_view baseline = "jittered", int baseline_budget = 16);
 
