@@ -168,8 +168,10 @@ int run(const RenderArgs& args) {
   if (args.aa_depth) s.aa_depth = *args.aa_depth;
   const std::string sampler = resolve_sampler_name(s);
   if ((args.aa_threshold || args.aa_depth) && !is_adaptive_sampler(sampler)) {
-    throw UsageError("--aa-threshold and --aa-depth apply to the adaptive samplers (--sampler adaptive or "
-                     "adaptive-corners), not to " + sampler);
+    throw UsageError(
+        "--aa-threshold and --aa-depth apply to the adaptive samplers (--sampler adaptive or "
+        "adaptive-corners), not to " +
+        sampler);
   }
   if (is_adaptive_sampler(sampler) && s.filter != "box") {
     throw UsageError("the adaptive samplers weight samples by area within the pixel (a box filter); --filter " +

@@ -228,19 +228,19 @@ class SceneReader {
 
  private:
   void read_render(const Node& n) {
-    n.check_keys(
-        {"width", "height", "spp", "sampler", "filter", "filter_radius", "aa_threshold", "aa_depth", "max_depth", "seed",
-         "background", "ambient", "sky_gradient", "horizon"});
+    n.check_keys({"width", "height", "spp", "sampler", "filter", "filter_radius", "aa_threshold", "aa_depth",
+                  "max_depth", "seed", "background", "ambient", "sky_gradient", "horizon"});
     RenderSettings& s = m_scene.settings;
     s.width = static_cast<int>(n.integer("width", s.width, 1, 32768));
     s.height = static_cast<int>(n.integer("height", s.height, 1, 32768));
     s.spp = static_cast<int>(n.integer("spp", s.spp, 1, 1 << 16));
-    s.sampler = n.choice("sampler",
-                         {"auto", "center", "regular", "random", "jittered", "cmj", "sobol", "adaptive-corners", "adaptive"},
-                         s.sampler);
+    s.sampler = n.choice(
+        "sampler", {"auto", "center", "regular", "random", "jittered", "cmj", "sobol", "adaptive-corners", "adaptive"},
+        s.sampler);
     s.filter = n.choice("filter", {"box", "tent", "gaussian", "mitchell"}, s.filter);
     s.filter_radius = static_cast<float>(n.real("filter_radius", 0.0, 0.0, 8.0));
-    if (s.filter_radius != 0.f && s.filter_radius < 0.5f) n.fail_at("filter_radius", "'filter_radius' must be 0 (the filter's default) or at least 0.5");
+    if (s.filter_radius != 0.f && s.filter_radius < 0.5f)
+      n.fail_at("filter_radius", "'filter_radius' must be 0 (the filter's default) or at least 0.5");
     s.aa_threshold = static_cast<float>(n.real("aa_threshold", -1.0, -1.0, 1.0));
     s.aa_depth = static_cast<int>(n.integer("aa_depth", -1, -1, 8));
     s.max_depth = static_cast<int>(n.integer("max_depth", s.max_depth, 1, 64));

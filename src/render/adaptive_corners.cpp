@@ -53,18 +53,22 @@ class PixelLattice {
 class CornerRenderer {
  public:
   CornerRenderer(const Scene& scene, Film& film, const AdaptiveParams& params)
-      : m_scene(scene), m_film(film), m_camera(scene.camera, film.width(), film.height()),
-        m_depth(std::clamp(params.depth, 0, kMaxDepth)), m_n(1 << m_depth), m_threshold(params.threshold),
+      : m_scene(scene),
+        m_film(film),
+        m_camera(scene.camera, film.width(), film.height()),
+        m_depth(std::clamp(params.depth, 0, kMaxDepth)),
+        m_n(1 << m_depth),
+        m_threshold(params.threshold),
         m_corners(std::size_t(film.width() + 1) * (film.height() + 1)) {}
 
   // A point on the global lattice (2^depth points per pixel side): its random choices (area
   // lights) are seeded by its position, so a point shared by two pixels has one colour.
   PointColour trace(const TraceContext& ctx, long gx, long gy) const {
     const float scale = 1.f / static_cast<float>(m_n);
-    const Color c = detail::trace_image_position(
-        ctx, m_camera, static_cast<float>(gx) * scale, static_cast<float>(gy) * scale,
-        hash_seed(m_scene.settings.seed ^ 0xc0e7e5ull, static_cast<std::uint64_t>(gx),
-                  static_cast<std::uint64_t>(gy), static_cast<std::uint64_t>(m_n)));
+    const Color c =
+        detail::trace_image_position(ctx, m_camera, static_cast<float>(gx) * scale, static_cast<float>(gy) * scale,
+                                     hash_seed(m_scene.settings.seed ^ 0xc0e7e5ull, static_cast<std::uint64_t>(gx),
+                                               static_cast<std::uint64_t>(gy), static_cast<std::uint64_t>(m_n)));
     return {c};
   }
 

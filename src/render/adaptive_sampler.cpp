@@ -16,8 +16,8 @@
 #include "raylab/render/adaptive.h"
 #include "raylab/sampling/pixel_sampler.h"  // Sample2
 #include "render_workers.h"
-#include "small_objects.h"
 #include "sample_contrast.h"
+#include "small_objects.h"
 
 namespace raylab {
 namespace {
@@ -27,11 +27,10 @@ using detail::TileGrid;
 
 constexpr int kMaxDepth = 8;
 // Side and area of a cell of each level, as fractions of the pixel: 2^-level and 4^-level.
-constexpr std::array<float, kMaxDepth + 1> kCellSide = {1.f,        0.5f,        0.25f,        0.125f,       0.0625f,
-                                                        0.03125f,   0.015625f,   0.0078125f,   0.00390625f};
-constexpr std::array<float, kMaxDepth + 1> kCellArea = {1.f,         0.25f,        0.0625f,      0.015625f,
-                                                        0.00390625f, 0.0009765625f, 0.000244140625f, 6.103515625e-05f,
-                                                        1.52587890625e-05f};
+constexpr std::array<float, kMaxDepth + 1> kCellSide = {1.f,      0.5f,      0.25f,      0.125f,     0.0625f,
+                                                        0.03125f, 0.015625f, 0.0078125f, 0.00390625f};
+constexpr std::array<float, kMaxDepth + 1> kCellArea = {
+    1.f, 0.25f, 0.0625f, 0.015625f, 0.00390625f, 0.0009765625f, 0.000244140625f, 6.103515625e-05f, 1.52587890625e-05f};
 // Levels every refined pixel gets regardless of what it finds: 4 x 4 strata, the stratification
 // of 16-spp jittered sampling; deeper levels only where a quarter's samples still differ.
 constexpr int kRefinedLevels = 2;
@@ -45,11 +44,10 @@ constexpr int kPatternLevels = 2;
 constexpr int kBatch = 64;
 
 // The 24 orderings of 0..3.
-constexpr std::array<std::array<std::uint8_t, 4>, 24> kPermutations4 = {{
-    {0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {0, 3, 2, 1},
-    {1, 0, 2, 3}, {1, 0, 3, 2}, {1, 2, 0, 3}, {1, 2, 3, 0}, {1, 3, 0, 2}, {1, 3, 2, 0},
-    {2, 0, 1, 3}, {2, 0, 3, 1}, {2, 1, 0, 3}, {2, 1, 3, 0}, {2, 3, 0, 1}, {2, 3, 1, 0},
-    {3, 0, 1, 2}, {3, 0, 2, 1}, {3, 1, 0, 2}, {3, 1, 2, 0}, {3, 2, 0, 1}, {3, 2, 1, 0}}};
+constexpr std::array<std::array<std::uint8_t, 4>, 24> kPermutations4 = {
+    {{0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {0, 3, 2, 1}, {1, 0, 2, 3}, {1, 0, 3, 2},
+     {1, 2, 0, 3}, {1, 2, 3, 0}, {1, 3, 0, 2}, {1, 3, 2, 0}, {2, 0, 1, 3}, {2, 0, 3, 1}, {2, 1, 0, 3}, {2, 1, 3, 0},
+     {2, 3, 0, 1}, {2, 3, 1, 0}, {3, 0, 1, 2}, {3, 0, 2, 1}, {3, 1, 0, 2}, {3, 1, 2, 0}, {3, 2, 0, 1}, {3, 2, 1, 0}}};
 
 // A pixel's multi-jittered pattern: per column of cells a random ordering of the four
 // sub-columns its cells use, per row of cells one of the four sub-rows, and a uniform offset in
@@ -140,8 +138,12 @@ int cell_of(float u, int level) {
 class AdaptiveRenderer {
  public:
   AdaptiveRenderer(const Scene& scene, Film& film, const AdaptiveParams& params)
-      : m_scene(scene), m_film(film), m_camera(scene.camera, film.width(), film.height()),
-        m_depth(std::clamp(params.depth, 0, kMaxDepth)), m_test(params), m_seed(scene.settings.seed),
+      : m_scene(scene),
+        m_film(film),
+        m_camera(scene.camera, film.width(), film.height()),
+        m_depth(std::clamp(params.depth, 0, kMaxDepth)),
+        m_test(params),
+        m_seed(scene.settings.seed),
         m_base(std::size_t(film.width()) * film.height()) {}
 
   const Camera& camera() const { return m_camera; }
@@ -211,7 +213,8 @@ class AdaptiveRenderer {
         }
         for (int i = 0; i < kPatternSize; ++i) {
           if (!used[static_cast<std::size_t>(i)]) {
-            samples.push_back(trace_at(ctx, px, py, pattern[static_cast<std::size_t>(i)], 2, static_cast<std::uint64_t>(i)));
+            samples.push_back(
+                trace_at(ctx, px, py, pattern[static_cast<std::size_t>(i)], 2, static_cast<std::uint64_t>(i)));
           }
         }
         if (m_depth > kPatternLevels) refine_quarters(ctx, px, py, samples);
@@ -233,8 +236,8 @@ class AdaptiveRenderer {
   static int quarter(Sample2 u) { return (u.x >= 0.5f ? 1 : 0) + (u.y >= 0.5f ? 2 : 0); }
 
   int base_index(int px, int py) const {
-    return static_cast<int>(hash_seed(m_seed ^ 0xba5eull, static_cast<std::uint64_t>(px),
-                                      static_cast<std::uint64_t>(py)) % kPatternSize);
+    return static_cast<int>(
+        hash_seed(m_seed ^ 0xba5eull, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py)) % kPatternSize);
   }
 
   std::uint64_t path_seed(int px, int py, std::uint64_t key) const {
@@ -248,8 +251,8 @@ class AdaptiveRenderer {
     c.cy = cell_of(u.y, level);
     c.x = u.x;
     c.y = u.y;
-    c.s.color = detail::trace_image_position(ctx, m_camera, static_cast<float>(px) + u.x,
-                                             static_cast<float>(py) + u.y, path_seed(px, py, key), &c.s.feature);
+    c.s.color = detail::trace_image_position(ctx, m_camera, static_cast<float>(px) + u.x, static_cast<float>(py) + u.y,
+                                             path_seed(px, py, key), &c.s.feature);
     return c;
   }
 
@@ -266,8 +269,9 @@ class AdaptiveRenderer {
     const float u = rng.next_float();
     const float v = rng.next_float();
     // Clamped so that float rounding never puts the sample in the next cell.
-    const Sample2 p{std::min((static_cast<float>(cx) + u) * side, std::nextafter((static_cast<float>(cx) + 1.f) * side, 0.f)),
-                    std::min((static_cast<float>(cy) + v) * side, std::nextafter((static_cast<float>(cy) + 1.f) * side, 0.f))};
+    const Sample2 p{
+        std::min((static_cast<float>(cx) + u) * side, std::nextafter((static_cast<float>(cx) + 1.f) * side, 0.f)),
+        std::min((static_cast<float>(cy) + v) * side, std::nextafter((static_cast<float>(cy) + 1.f) * side, 0.f))};
     CellSample c = trace_at(ctx, px, py, p, level, key);
     c.cx = cx;
     c.cy = cy;
@@ -382,7 +386,8 @@ RenderResult render_adaptive(const Scene& scene, const Accelerator& accel, Film&
     workers.for_each(h, [&](int y, const TraceContext&) {
       for (int x = 0; x < w; ++x) flagged[renderer.index(x, y)] = renderer.neighbourhood_differs(x, y) ? 1 : 0;
     });
-    for (const PixelRect& r : detail::small_object_footprints(scene, renderer.camera(), w, h, params.small_object_pixels)) {
+    for (const PixelRect& r :
+         detail::small_object_footprints(scene, renderer.camera(), w, h, params.small_object_pixels)) {
       for (int y = r.y0; y < r.y1; ++y) {
         for (int x = r.x0; x < r.x1; ++x) flagged[renderer.index(x, y)] = 1;
       }
@@ -405,7 +410,8 @@ RenderResult render_adaptive(const Scene& scene, const Accelerator& accel, Film&
     const int px = i % w;
     const int py = i / w;
     bool differs = false;
-    counts[static_cast<std::size_t>(i)] = static_cast<std::uint32_t>(renderer.refine_pixel(ctx, px, py, samples, differs));
+    counts[static_cast<std::size_t>(i)] =
+        static_cast<std::uint32_t>(renderer.refine_pixel(ctx, px, py, samples, differs));
     if (differs) {
       for (int y = std::max(0, py - 1); y <= std::min(h - 1, py + 1); ++y) {
         for (int x = std::max(0, px - 1); x <= std::min(w - 1, px + 1); ++x) {

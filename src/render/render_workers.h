@@ -29,8 +29,11 @@ class TileGrid {
  public:
   /// Tiles of `tile` pixels (at least 1) over a `width` x `height` image.
   TileGrid(int width, int height, int tile)
-      : m_width(width), m_height(height), m_tile(std::max(1, tile)),
-        m_tiles_x((width + m_tile - 1) / m_tile), m_tiles_y((height + m_tile - 1) / m_tile) {}
+      : m_width(width),
+        m_height(height),
+        m_tile(std::max(1, tile)),
+        m_tiles_x((width + m_tile - 1) / m_tile),
+        m_tiles_y((height + m_tile - 1) / m_tile) {}
 
   /// Number of tiles.
   int count() const { return m_tiles_x * m_tiles_y; }
@@ -53,7 +56,9 @@ class RenderWorkers {
  public:
   /// Workers for `scene` traced through `accel`, as many threads as `options` asks.
   RenderWorkers(const Scene& scene, const Accelerator& accel, const RenderOptions& options)
-      : m_scene(scene), m_accel(accel), m_count(options.count_traversal),
+      : m_scene(scene),
+        m_accel(accel),
+        m_count(options.count_traversal),
         m_arena(options.threads > 0 ? options.threads : tbb::info::default_concurrency()) {}
 
   /// Calls `fn(index, ctx)` for every index in [0, count), in parallel, one index per task.

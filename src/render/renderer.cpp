@@ -82,8 +82,7 @@ RenderResult render_uniform(const Scene& scene, const Accelerator& accel, Film& 
           const Sample2 u = sampler.sample(px, py, i);
           const float x = static_cast<float>(px) + u.x;
           const float y = static_cast<float>(py) + u.y;
-          const Color c =
-              detail::trace_image_position(ctx, camera, x, y, sample_path_seed(sampler.seed(), px, py, i));
+          const Color c = detail::trace_image_position(ctx, camera, x, y, sample_path_seed(sampler.seed(), px, py, i));
           if (acc) {
             acc->add(filter, x, y, c);
           } else {
@@ -142,8 +141,10 @@ RenderResult render(const Scene& scene, const Accelerator& accel, Film& film, co
   RenderResult result;
   if (is_adaptive_sampler(name)) {
     if (!is_pixel_box(filter)) {
-      throw UsageError("the adaptive samplers weight their samples by area within the pixel (a box filter); "
-                       "--filter " + s.filter + " applies to the uniform samplers");
+      throw UsageError(
+          "the adaptive samplers weight their samples by area within the pixel (a box filter); "
+          "--filter " +
+          s.filter + " applies to the uniform samplers");
     }
     const AdaptiveParams params = adaptive_params(name, s);
     result = name == "adaptive" ? render_adaptive(scene, accel, film, options, params)

@@ -17,8 +17,8 @@ TEST_F(Cli, SppRoundingIsAnnounced) {
 }
 
 TEST_F(Cli, AdaptiveReportsItsRaysAndWritesTheSampleCounts) {
-  const CliResult r = run("render aa-edges --width 64 --height 48 --sampler adaptive --aov samples -o " +
-                          out_file("a.exr"));
+  const CliResult r =
+      run("render aa-edges --width 64 --height 48 --sampler adaptive --aov samples -o " + out_file("a.exr"));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("primary rays per pixel"), std::string::npos) << r.out;
   EXPECT_TRUE(fs::exists(out() / "a.samples.png"));
@@ -39,8 +39,8 @@ TEST_F(Cli, AdaptiveReportsItsRaysAndWritesTheSampleCounts) {
 }
 
 TEST_F(Cli, SampleCountsBesideAPngGoToTheirOwnExr) {
-  const CliResult r = run("render aa-edges --width 32 --height 24 --sampler adaptive-corners --aov samples -o " +
-                          out_file("b.png"));
+  const CliResult r =
+      run("render aa-edges --width 32 --height 24 --sampler adaptive-corners --aov samples -o " + out_file("b.png"));
   ASSERT_EQ(r.code, 0) << r.err;
   for (const char* f : {"b.png", "b.samples.png", "b.samples.exr"}) EXPECT_TRUE(fs::exists(out() / f)) << f;
 }

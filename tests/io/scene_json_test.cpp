@@ -176,7 +176,8 @@ TEST(SceneJson, MistakesAreReportedWithLineColumnAndValidChoices) {
        "s.json:1:27:", "'width' must be an integer, found a string"},
       {"{\"version\": 1, \"render\": {\"spp\": 0}, \"objects\": []}",
        "s.json:1:27:", "'spp' is 0, must be in [1, 65536]"},
-      {"{\"version\": 1, \"render\": {\"sampler\": \"halton\"}, \"objects\": []}", "s.json:1:27:", "(valid: auto, center, regular, random, jittered, cmj, sobol, adaptive-corners, adaptive)"},
+      {"{\"version\": 1, \"render\": {\"sampler\": \"halton\"}, \"objects\": []}",
+       "s.json:1:27:", "(valid: auto, center, regular, random, jittered, cmj, sobol, adaptive-corners, adaptive)"},
       {"{\"version\": 1, \"objects\": [{\"type\": \"sphere\", \"material\": \"nope\", \"center\": [0,0,0], \"radius\": "
        "1}]}",
        "s.json:1:47:", "unknown material 'nope' (the scene defines no materials)"},

@@ -92,7 +92,8 @@ std::vector<bool> with_neighbours(const std::vector<bool>& set) {
     for (int px = 0; px < kWidth; ++px) {
       if (!set[std::size_t(py) * kWidth + px]) continue;
       for (int y = std::max(0, py - 1); y <= std::min(kHeight - 1, py + 1); ++y) {
-        for (int x = std::max(0, px - 1); x <= std::min(kWidth - 1, px + 1); ++x) out[std::size_t(y) * kWidth + x] = true;
+        for (int x = std::max(0, px - 1); x <= std::min(kWidth - 1, px + 1); ++x)
+          out[std::size_t(y) * kWidth + x] = true;
       }
     }
   }

@@ -23,7 +23,7 @@ struct TraceContext {
 
 /// What a primary ray met first: the features adaptive sampling compares between samples.
 struct PrimaryFeature {
-  std::int32_t object = -1;  ///< object id of the first hit; -1 when the ray left the scene
+  std::int32_t object = -1;    ///< object id of the first hit; -1 when the ray left the scene
   Vec3 normal{0.f, 0.f, 0.f};  ///< unit shading normal there (zero when nothing was hit)
 };
 
