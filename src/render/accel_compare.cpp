@@ -12,11 +12,14 @@
 #include <iterator>
 #include <limits>
 
+#include "json_text.h"
 #include "raylab/accel/factory.h"
 #include "raylab/core/error.h"
 
 namespace raylab {
 namespace {
+
+using detail::json_string;
 
 using Clock = std::chrono::steady_clock;
 
@@ -260,21 +263,6 @@ std::string agreement_text(const AccelMeasure& m) {
   if (m.is_reference) return "reference";
   if (m.mismatch_count == 0) return "ok";
   return fmt::format("{} rays differ", m.mismatch_count);
-}
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      out += fmt::format("\\u{:04x}", static_cast<unsigned>(c));
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
 }
 
 std::string ray_text(const Ray& r) {

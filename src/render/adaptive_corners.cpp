@@ -19,10 +19,6 @@ using detail::TileGrid;
 // Deepest subdivision: 2^8 x 2^8 cells in a pixel is already far beyond any useful budget.
 constexpr int kMaxDepth = 8;
 
-struct PointColour {
-  Color color;
-};
-
 // The traced points of one pixel on its (2^depth + 1)^2 lattice; reused across pixels.
 class PixelLattice {
  public:
@@ -33,8 +29,8 @@ class PixelLattice {
     m_count = 0;
   }
   bool has(int i, int j) const { return m_valid[index(i, j)] != 0; }
-  const PointColour& at(int i, int j) const { return m_points[index(i, j)]; }
-  void set(int i, int j, PointColour p) {
+  const Color& at(int i, int j) const { return m_points[index(i, j)]; }
+  void set(int i, int j, Color p) {
     const std::size_t k = index(i, j);
     m_count += m_valid[k] ? 0 : 1;
     m_points[k] = p;
@@ -45,7 +41,7 @@ class PixelLattice {
  private:
   std::size_t index(int i, int j) const { return std::size_t(j) * (m_n + 1) + i; }
   int m_n;
-  std::vector<PointColour> m_points;
+  std::vector<Color> m_points;
   std::vector<unsigned char> m_valid;
   int m_count = 0;
 };
@@ -63,13 +59,11 @@ class CornerRenderer {
 
   // A point on the global lattice (2^depth points per pixel side): its random choices (area
   // lights) are seeded by its position, so a point shared by two pixels has one colour.
-  PointColour trace(const TraceContext& ctx, long gx, long gy) const {
+  Color trace(const TraceContext& ctx, long gx, long gy) const {
     const float scale = 1.f / static_cast<float>(m_n);
-    const Color c =
-        detail::trace_image_position(ctx, m_camera, static_cast<float>(gx) * scale, static_cast<float>(gy) * scale,
-                                     hash_seed(m_scene.settings.seed ^ 0xc0e7e5ull, static_cast<std::uint64_t>(gx),
-                                               static_cast<std::uint64_t>(gy), static_cast<std::uint64_t>(m_n)));
-    return {c};
+    return detail::trace_image_position(ctx, m_camera, static_cast<float>(gx) * scale, static_cast<float>(gy) * scale,
+                                        hash_seed(m_scene.settings.seed ^ 0xc0e7e5ull, static_cast<std::uint64_t>(gx),
+                                                  static_cast<std::uint64_t>(gy), static_cast<std::uint64_t>(m_n)));
   }
 
   // Corners of tile `r`: those at (x, y) with x0 <= x < x1 and y0 <= y < y1, plus the image's
@@ -101,24 +95,24 @@ class CornerRenderer {
   }
 
  private:
-  const PointColour& point(const TraceContext& ctx, PixelLattice& lattice, int px, int py, int i, int j) {
+  const Color& point(const TraceContext& ctx, PixelLattice& lattice, int px, int py, int i, int j) {
     if (!lattice.has(i, j)) lattice.set(i, j, trace(ctx, long(px) * m_n + i, long(py) * m_n + j));
     return lattice.at(i, j);
   }
 
   // Area-weighted colour (in lattice-cell units) of the cell with corner (i, j) and side `s`.
   Color cell(const TraceContext& ctx, PixelLattice& lattice, int px, int py, int i, int j, int s) {
-    const PointColour& a = lattice.at(i, j);
-    const PointColour& b = lattice.at(i + s, j);
-    const PointColour& c = lattice.at(i, j + s);
-    const PointColour& d = lattice.at(i + s, j + s);
+    const Color& a = lattice.at(i, j);
+    const Color& b = lattice.at(i + s, j);
+    const Color& c = lattice.at(i, j + s);
+    const Color& d = lattice.at(i + s, j + s);
     detail::ContrastRange range;
-    range.add(a.color);
-    range.add(b.color);
-    range.add(c.color);
-    range.add(d.color);
+    range.add(a);
+    range.add(b);
+    range.add(c);
+    range.add(d);
     const float area = static_cast<float>(s) * static_cast<float>(s);
-    if (s == 1 || range.contrast() <= m_threshold) return (a.color + b.color + c.color + d.color) * (0.25f * area);
+    if (s == 1 || range.contrast() <= m_threshold) return (a + b + c + d) * (0.25f * area);
     const int h = s / 2;
     // The four edge midpoints and the centre (those already traced by a neighbour are reused).
     point(ctx, lattice, px, py, i + h, j);
@@ -136,7 +130,7 @@ class CornerRenderer {
   int m_depth;
   int m_n;  // lattice points per pixel side, 2^depth
   float m_threshold;
-  std::vector<PointColour> m_corners;  // (width + 1) x (height + 1), shared by neighbouring pixels
+  std::vector<Color> m_corners;  // (width + 1) x (height + 1), shared by neighbouring pixels
 };
 
 }  // namespace
@@ -177,11 +171,7 @@ RenderResult render_adaptive_corners(const Scene& scene, const Accelerator& acce
     progress();
   });
 
-  RenderResult result;
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.stats = workers.merged_stats();
-  result.samples_per_pixel = std::move(counts);
-  return result;
+  return detail::finish_render(workers, start, std::move(counts));
 }
 
 }  // namespace raylab

@@ -138,8 +138,7 @@ int cell_of(float u, int level) {
 class AdaptiveRenderer {
  public:
   AdaptiveRenderer(const Scene& scene, Film& film, const AdaptiveParams& params)
-      : m_scene(scene),
-        m_film(film),
+      : m_film(film),
         m_camera(scene.camera, film.width(), film.height()),
         m_depth(std::clamp(params.depth, 0, kMaxDepth)),
         m_test(params),
@@ -228,8 +227,6 @@ class AdaptiveRenderer {
     return static_cast<int>(samples.size());
   }
 
-  int width() const { return m_film.width(); }
-  int height() const { return m_film.height(); }
   std::size_t index(int px, int py) const { return std::size_t(py) * m_film.width() + px; }
 
  private:
@@ -338,7 +335,6 @@ class AdaptiveRenderer {
     for (int child : children) refine_cell(ctx, px, py, samples, split(ctx, px, py, samples, child));
   }
 
-  const Scene& m_scene;
   Film& m_film;
   Camera m_camera;
   int m_depth;
@@ -427,11 +423,7 @@ RenderResult render_adaptive(const Scene& scene, const Accelerator& accel, Film&
     progress(1);
   });
 
-  RenderResult result;
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.stats = workers.merged_stats();
-  result.samples_per_pixel = std::move(counts);
-  return result;
+  return detail::finish_render(workers, start, std::move(counts));
 }
 
 }  // namespace raylab

@@ -9,6 +9,7 @@
 #include <limits>
 #include <numeric>
 
+#include "json_text.h"
 #include "raylab/core/error.h"
 #include "raylab/render/adaptive.h"
 #include "raylab/render/image_metrics.h"
@@ -18,6 +19,9 @@
 
 namespace raylab {
 namespace {
+
+using detail::json_number;
+using detail::json_string;
 
 constexpr std::array<std::string_view, 8> kSamplers = {"center", "regular", "random",           "jittered",
                                                        "cmj",    "sobol",   "adaptive-corners", "adaptive"};
@@ -58,24 +62,6 @@ struct PlannedRender {
   int seed = 0;
   double weight = 1.0;
 };
-
-std::string json_string(std::string_view s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      out += fmt::format("\\u{:04x}", static_cast<unsigned>(c));
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
-// A finite number for JSON, else null (JSON has no infinity).
-std::string json_number(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null"; }
 
 std::string psnr_text(double v) { return std::isfinite(v) ? fmt::format("{:.2f}", v) : "inf"; }
 

@@ -10,6 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <chrono>
 #include <vector>
 
 #include "raylab/core/rng.h"
@@ -116,6 +117,17 @@ class RenderWorkers {
   tbb::task_arena m_arena;
   tbb::enumerable_thread_specific<RenderStats> m_stats;
 };
+
+/// What a pixel loop that started at `start` reports: its wall-clock time, the statistics of
+/// every worker, and the samples that went into each pixel.
+inline RenderResult finish_render(RenderWorkers& workers, std::chrono::steady_clock::time_point start,
+                                  std::vector<std::uint32_t> samples_per_pixel) {
+  RenderResult result;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.stats = workers.merged_stats();
+  result.samples_per_pixel = std::move(samples_per_pixel);
+  return result;
+}
 
 /// The radiance of the primary ray through image position (x, y), with every random choice along
 /// it seeded by `path_seed`; `feature` (optional) receives what the ray hit first.

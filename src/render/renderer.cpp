@@ -120,11 +120,9 @@ RenderResult render_uniform(const Scene& scene, const Accelerator& accel, Film& 
     }
   }
 
-  RenderResult result;
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.stats = workers.merged_stats();
-  result.samples_per_pixel.assign(std::size_t(film.width()) * film.height(), static_cast<std::uint32_t>(spp));
-  return result;
+  return detail::finish_render(
+      workers, start,
+      std::vector<std::uint32_t>(std::size_t(film.width()) * film.height(), static_cast<std::uint32_t>(spp)));
 }
 
 }  // namespace
