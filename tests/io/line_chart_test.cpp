@@ -10,7 +10,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <regex>
 
 namespace raylab {
 namespace {
@@ -21,20 +20,22 @@ std::size_t count(const std::string& text, const std::string& what) {
   return n;
 }
 
-// The (cx, cy) of every marker circle, in document order.
+// The (cx, cy) of every marker circle, in document order. (Plain string search: GCC 12 warns
+// inside std::regex under the sanitizers, and warnings are errors.)
 std::vector<std::pair<double, double>> markers(const std::string& svg) {
   std::vector<std::pair<double, double>> out;
-  const std::regex re("<circle class=\"point\" cx=\"([-0-9.]+)\" cy=\"([-0-9.]+)\"");
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), re); it != std::sregex_iterator(); ++it) {
-    out.emplace_back(std::stod((*it)[1]), std::stod((*it)[2]));
+  const std::string head = "<circle class=\"point\" cx=\"";
+  for (std::size_t at = svg.find(head); at != std::string::npos; at = svg.find(head, at + 1)) {
+    const std::size_t x = at + head.size();
+    const std::size_t y = svg.find("cy=\"", x) + 4;
+    out.emplace_back(std::stod(svg.substr(x)), std::stod(svg.substr(y)));
   }
   return out;
 }
 
 // The tick labels: text elements anchored at the middle (x axis) or the end (y axis).
 bool has_label(const std::string& svg, const std::string& anchor, const std::string& label) {
-  return std::regex_search(svg, std::regex("text-anchor=\"" + anchor + "\">" +
-                                           std::regex_replace(label, std::regex("\\."), "\\.") + "</text>"));
+  return svg.find("text-anchor=\"" + anchor + "\">" + label + "</text>") != std::string::npos;
 }
 
 LineChart two_lines() {
