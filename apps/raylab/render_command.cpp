@@ -102,8 +102,7 @@ void print_protocol_counts(const SpdProtocolCounts& c) {
 
 std::vector<std::string> sampler_choices() {
   std::vector<std::string> names{"auto"};
-  for (auto n : pixel_sampler_names()) names.emplace_back(n);
-  for (auto n : adaptive_sampler_names()) names.emplace_back(n);
+  for (auto n : render_sampler_names()) names.emplace_back(n);
   return names;
 }
 
@@ -173,11 +172,7 @@ int run(const RenderArgs& args) {
         "adaptive-corners), not to " +
         sampler);
   }
-  if (is_adaptive_sampler(sampler) && s.filter != "box") {
-    throw UsageError("the adaptive samplers weight samples by area within the pixel (a box filter); --filter " +
-                     s.filter + " applies to the uniform samplers");
-  }
-  (void)make_filter(s.filter, s.filter_radius);  // usage errors before any work
+  check_sampling_settings(s);  // usage errors before any work
 
   SceneAccelOptions structure = args.structure.options;
   structure.top = args.accel;
@@ -209,7 +204,8 @@ int run(const RenderArgs& args) {
   const double pixels = static_cast<double>(s.width) * s.height;
   const std::string sampling =
       is_adaptive_sampler(sampler)
-          ? fmt::format("{}, {:.2f} primary rays per pixel", sampler, static_cast<double>(result.primary_rays) / pixels)
+          ? fmt::format("{}, {:.2f} primary rays per pixel", sampler,
+                        static_cast<double>(result.primary_rays()) / pixels)
           : fmt::format("{} spp {}", result.samples_per_pixel.empty() ? s.spp : int(result.samples_per_pixel[0]),
                         sampler);
   if (bar)
@@ -220,7 +216,7 @@ int run(const RenderArgs& args) {
   if (args.stats) print_stats(result.stats, accel->info(), result.seconds);
   if (!args.quiet) {
     fmt::print("wrote {} ({}x{}, {}, {} primary rays, --accel {}) in {}\n", args.output, s.width, s.height, sampling,
-               result.primary_rays, args.accel, ProgressBar::format_duration(result.seconds));
+               result.primary_rays(), args.accel, ProgressBar::format_duration(result.seconds));
   }
   return 0;
 }

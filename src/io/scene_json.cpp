@@ -5,13 +5,17 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <span>
 #include <sstream>
+#include <vector>
 
 #include "raylab/core/error.h"
 #include "raylab/io/json_document.h"
 #include "raylab/io/read_file.h"
 #include "raylab/io/scene_loader.h"
 #include "raylab/io/texture_io.h"
+#include "raylab/render/renderer.h"
+#include "raylab/sampling/filter.h"
 #include "raylab/scene/mesh_builder.h"
 #include "raylab/scene/scene_merge.h"
 #include "raylab/scene/spd.h"
@@ -31,7 +35,7 @@ std::string type_name(const json& v) {
   return "null";
 }
 
-std::string join(std::initializer_list<std::string_view> names) {
+std::string join(std::span<const std::string_view> names) {
   std::string out;
   for (auto n : names) out += (out.empty() ? "" : ", ") + std::string(n);
   return out;
@@ -74,7 +78,8 @@ class Node {
       bool known = false;
       for (auto v : valid) known = known || item.key() == v;
       if (!known)
-        fail_at(item.key(), "unknown key '" + item.key() + "' in " + m_what + " (valid: " + join(valid) + ")");
+        fail_at(item.key(), "unknown key '" + item.key() + "' in " + m_what + " (valid: " +
+                                join(std::span<const std::string_view>(valid.begin(), valid.size())) + ")");
     }
   }
   bool has(std::string_view key) const { return m_value.contains(std::string(key)); }
@@ -134,12 +139,16 @@ class Node {
     if (!v.is_string()) fail_at(key, "'" + std::string(key) + "' must be a string, found " + type_name(v));
     return v.get<std::string>();
   }
-  std::string choice(std::string_view key, std::initializer_list<std::string_view> valid,
+  std::string choice(std::string_view key, std::span<const std::string_view> valid,
                      std::optional<std::string> fallback = std::nullopt) const {
     const std::string s = string(key, fallback);
     for (auto v : valid)
       if (s == v) return s;
     fail_at(key, "'" + std::string(key) + "' is '" + s + "' (valid: " + join(valid) + ")");
+  }
+  std::string choice(std::string_view key, std::initializer_list<std::string_view> valid,
+                     std::optional<std::string> fallback = std::nullopt) const {
+    return choice(key, std::span<const std::string_view>(valid.begin(), valid.size()), std::move(fallback));
   }
   Vec3 vec3(std::string_view key, std::optional<Vec3> fallback = std::nullopt) const {
     if (!has(key)) {
@@ -234,10 +243,10 @@ class SceneReader {
     s.width = static_cast<int>(n.integer("width", s.width, 1, 32768));
     s.height = static_cast<int>(n.integer("height", s.height, 1, 32768));
     s.spp = static_cast<int>(n.integer("spp", s.spp, 1, 1 << 16));
-    s.sampler = n.choice(
-        "sampler", {"auto", "center", "regular", "random", "jittered", "cmj", "sobol", "adaptive-corners", "adaptive"},
-        s.sampler);
-    s.filter = n.choice("filter", {"box", "tent", "gaussian", "mitchell"}, s.filter);
+    std::vector<std::string_view> samplers{"auto"};
+    for (std::string_view name : render_sampler_names()) samplers.push_back(name);
+    s.sampler = n.choice("sampler", samplers, s.sampler);
+    s.filter = n.choice("filter", filter_names(), s.filter);
     s.filter_radius = static_cast<float>(n.real("filter_radius", 0.0, 0.0, 8.0));
     if (s.filter_radius != 0.f && s.filter_radius < 0.5f)
       n.fail_at("filter_radius", "'filter_radius' must be 0 (the filter's default) or at least 0.5");

@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "json_text.h"
+#include "median.h"
 #include "raylab/accel/factory.h"
 #include "raylab/core/error.h"
 
@@ -20,6 +21,7 @@ namespace raylab {
 namespace {
 
 using detail::json_string;
+using detail::median;
 
 using Clock = std::chrono::steady_clock;
 
@@ -33,13 +35,6 @@ constexpr double kCalibrationSeconds = 0.02;
 constexpr std::size_t kGrain = 512;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
 
 void progress(const CompareOptions& o, const std::string& line) {
   if (o.on_progress) o.on_progress(line);

@@ -15,6 +15,7 @@
 
 #include "raylab/render/adaptive.h"
 #include "raylab/sampling/pixel_sampler.h"  // Sample2
+#include "raylab/sampling/stratum.h"
 #include "render_workers.h"
 #include "sample_contrast.h"
 #include "small_objects.h"
@@ -26,9 +27,7 @@ using detail::PixelRect;
 using detail::TileGrid;
 
 constexpr int kMaxDepth = 8;
-// Side and area of a cell of each level, as fractions of the pixel: 2^-level and 4^-level.
-constexpr std::array<float, kMaxDepth + 1> kCellSide = {1.f,      0.5f,      0.25f,      0.125f,     0.0625f,
-                                                        0.03125f, 0.015625f, 0.0078125f, 0.00390625f};
+// Area of a cell of each level, as a fraction of the pixel: 4^-level.
 constexpr std::array<float, kMaxDepth + 1> kCellArea = {
     1.f, 0.25f, 0.0625f, 0.015625f, 0.00390625f, 0.0009765625f, 0.000244140625f, 6.103515625e-05f, 1.52587890625e-05f};
 // Levels every refined pixel gets regardless of what it finds: 4 x 4 strata, the stratification
@@ -66,9 +65,9 @@ class MultiJitteredPattern {
     Pcg32 rng(m_key ^ mix64(static_cast<std::uint64_t>(i) + 1u));
     const float u = rng.next_float();
     const float v = rng.next_float();
-    const float x = (static_cast<float>(4 * cx + column_order[static_cast<std::size_t>(cy)]) + u) * (1.f / 16.f);
-    const float y = (static_cast<float>(4 * cy + row_order[static_cast<std::size_t>(cx)]) + v) * (1.f / 16.f);
-    return {std::min(x, 0x1.fffffep-1f), std::min(y, 0x1.fffffep-1f)};
+    // Kept inside its 1/16 column and row: (k + u) / 16 in float can round onto the next one.
+    return {point_in_interval(4 * cx + column_order[static_cast<std::size_t>(cy)], u, 16),
+            point_in_interval(4 * cy + row_order[static_cast<std::size_t>(cx)], v, 16)};
   }
 
  private:
@@ -262,13 +261,9 @@ class AdaptiveRenderer {
   CellSample jittered_sample(const TraceContext& ctx, int px, int py, int level, int cx, int cy) const {
     const std::uint64_t key = (std::uint64_t(level) << 40) | (std::uint64_t(cy) << 20) | std::uint64_t(cx);
     Pcg32 rng(hash_seed(m_seed, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py), key));
-    const float side = kCellSide[static_cast<std::size_t>(level)];
     const float u = rng.next_float();
     const float v = rng.next_float();
-    // Clamped so that float rounding never puts the sample in the next cell.
-    const Sample2 p{
-        std::min((static_cast<float>(cx) + u) * side, std::nextafter((static_cast<float>(cx) + 1.f) * side, 0.f)),
-        std::min((static_cast<float>(cy) + v) * side, std::nextafter((static_cast<float>(cy) + 1.f) * side, 0.f))};
+    const Sample2 p{point_in_interval(cx, u, 1 << level), point_in_interval(cy, v, 1 << level)};
     CellSample c = trace_at(ctx, px, py, p, level, key);
     c.cx = cx;
     c.cy = cy;

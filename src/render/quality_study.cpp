@@ -10,11 +10,11 @@
 #include <numeric>
 
 #include "json_text.h"
+#include "median.h"
 #include "raylab/core/error.h"
 #include "raylab/render/adaptive.h"
 #include "raylab/render/image_metrics.h"
 #include "raylab/render/renderer.h"
-#include "raylab/sampling/filter.h"
 #include "raylab/sampling/pixel_sampler.h"
 
 namespace raylab {
@@ -22,15 +22,20 @@ namespace {
 
 using detail::json_number;
 using detail::json_string;
+using detail::median;
 
-constexpr std::array<std::string_view, 8> kSamplers = {"center", "regular", "random",           "jittered",
-                                                       "cmj",    "sobol",   "adaptive-corners", "adaptive"};
 constexpr int kMaxBudget = 1 << 16;
 constexpr int kMaxSeeds = 1000;
 
+// The study takes every sampler a render does, except "auto" (which is one of them by another name).
+bool is_study_sampler(std::string_view s) {
+  const std::vector<std::string_view> names = render_sampler_names();
+  return std::find(names.begin(), names.end(), s) != names.end();
+}
+
 std::string valid_samplers() {
   std::string out;
-  for (std::string_view s : kSamplers) out += (out.empty() ? "" : ", ") + std::string(s);
+  for (std::string_view s : render_sampler_names()) out += (out.empty() ? "" : ", ") + std::string(s);
   return out;
 }
 
@@ -49,13 +54,6 @@ std::vector<std::string> split_list(std::string_view text) {
   }
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 // The renders a study makes, in order, with the weight (samples per pixel) that progress uses.
 struct PlannedRender {
   std::size_t row = 0;
@@ -67,21 +65,22 @@ std::string psnr_text(double v) { return std::isfinite(v) ? fmt::format("{:.2f}"
 
 }  // namespace
 
-std::vector<std::string> quality_sampler_names() { return {kSamplers.begin(), kSamplers.end()}; }
+std::vector<std::string> quality_sampler_names() {
+  const std::vector<std::string_view> names = render_sampler_names();
+  return {names.begin(), names.end()};
+}
 
 bool sampler_is_deterministic(std::string_view s) { return s == "center" || s == "regular" || s == "adaptive-corners"; }
 
-bool sampler_is_adaptive(std::string_view s) { return s == "adaptive-corners" || s == "adaptive"; }
-
 int used_spp(std::string_view sampler, int budget) {
-  return sampler_is_adaptive(sampler) ? budget : valid_spp(sampler, budget);
+  return is_adaptive_sampler(sampler) ? budget : valid_spp(sampler, budget);
 }
 
 void validate_quality_options(const QualityOptions& o) {
   if (o.samplers.empty()) throw UsageError("no sampler to study (valid: " + valid_samplers() + ")");
   for (std::size_t i = 0; i < o.samplers.size(); ++i) {
     const std::string& s = o.samplers[i];
-    if (std::find(kSamplers.begin(), kSamplers.end(), s) == kSamplers.end()) {
+    if (!is_study_sampler(s)) {
       throw UsageError("unknown sampler '" + s + "' (valid: " + valid_samplers() + ")");
     }
     if (std::find(o.samplers.begin(), o.samplers.begin() + static_cast<std::ptrdiff_t>(i), s) !=
@@ -129,7 +128,7 @@ std::vector<int> parse_budget_list(std::string_view text) {
 std::vector<std::string> parse_sampler_list(std::string_view text) {
   std::vector<std::string> out = split_list(text);
   for (const std::string& s : out) {
-    if (std::find(kSamplers.begin(), kSamplers.end(), s) == kSamplers.end()) {
+    if (!is_study_sampler(s)) {
       throw UsageError("--samplers: unknown sampler '" + s + "' (valid: " + valid_samplers() + ")");
     }
   }
@@ -195,15 +194,12 @@ QualityResult run_quality_study(const Scene& scene, const Accelerator& accel, co
     throw InputError("", fmt::format("the reference image is {}x{} but the study renders {}x{}", reference.width(),
                                      reference.height(), base.width, base.height));
   }
-  // The renderer refuses adaptive samplers with a filter wider than the pixel box: say so now,
-  // not after the uniform rows have run.
-  const Filter filter = make_filter(base.filter, base.filter_radius);
-  const bool pixel_box = filter.kind() == FilterKind::kBox && filter.radius() == 0.5f;
+  // What the renderer would refuse (an adaptive sampler with a filter other than the pixel
+  // box, a bad filter) is refused now, not after the rows before it have run.
   for (const std::string& s : options.samplers) {
-    if (sampler_is_adaptive(s) && !pixel_box) {
-      throw UsageError("sampler '" + s + "' weights its samples within the pixel (the box filter); with filter '" +
-                       base.filter + "' leave the adaptive samplers out (--samplers) or use --filter box");
-    }
+    RenderSettings probe = base;
+    probe.sampler = s;
+    check_sampling_settings(probe);
   }
   std::vector<int> budgets = options.budgets;
   std::sort(budgets.begin(), budgets.end());
@@ -257,8 +253,7 @@ QualityResult run_quality_study(const Scene& scene, const Accelerator& accel, co
     }
     const RenderResult r = render(work, accel, film, ro);
     done += p.weight;
-    // primary_rays is filled by the sampling renderer; the count by kind always is.
-    const std::uint64_t primary = r.primary_rays ? r.primary_rays : r.stats.rays[int(RayKind::kPrimary)];
+    const std::uint64_t primary = r.primary_rays();
     rays[p.row].push_back(pixels > 0 ? static_cast<double>(primary) / pixels : 0.0);
     seconds[p.row].push_back(r.seconds);
     errors[p.row].push_back(measure_error(film, reference));

@@ -1,5 +1,6 @@
 #include "raylab/render/renderer.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -132,18 +133,34 @@ std::string resolve_sampler_name(const RenderSettings& settings) {
   return settings.sampler;
 }
 
+std::vector<std::string_view> render_sampler_names() {
+  std::vector<std::string_view> names(pixel_sampler_names().begin(), pixel_sampler_names().end());
+  names.insert(names.end(), adaptive_sampler_names().begin(), adaptive_sampler_names().end());
+  return names;
+}
+
+void check_sampling_settings(const RenderSettings& s) {
+  const std::string name = resolve_sampler_name(s);
+  const std::vector<std::string_view> names = render_sampler_names();
+  if (std::find(names.begin(), names.end(), name) == names.end()) {
+    std::string valid = "auto";
+    for (std::string_view n : names) valid += ", " + std::string(n);
+    throw UsageError("unknown sampler '" + name + "' (valid: " + valid + ")");
+  }
+  const Filter filter = make_filter(s.filter, s.filter_radius);
+  if (is_adaptive_sampler(name) && !is_pixel_box(filter)) {
+    throw UsageError("the adaptive samplers weight their samples by area within the pixel (a box filter); filter '" +
+                     s.filter + "' applies to the uniform samplers");
+  }
+}
+
 RenderResult render(const Scene& scene, const Accelerator& accel, Film& film, const RenderOptions& options) {
   const RenderSettings& s = scene.settings;
+  check_sampling_settings(s);
   const std::string name = resolve_sampler_name(s);
   const Filter filter = make_filter(s.filter, s.filter_radius);
   RenderResult result;
   if (is_adaptive_sampler(name)) {
-    if (!is_pixel_box(filter)) {
-      throw UsageError(
-          "the adaptive samplers weight their samples by area within the pixel (a box filter); "
-          "--filter " +
-          s.filter + " applies to the uniform samplers");
-    }
     const AdaptiveParams params = adaptive_params(name, s);
     result = name == "adaptive" ? render_adaptive(scene, accel, film, options, params)
                                 : render_adaptive_corners(scene, accel, film, options, params);
@@ -153,7 +170,6 @@ RenderResult render(const Scene& scene, const Accelerator& accel, Film& film, co
     result = render_uniform(scene, accel, film, options, *sampler, filter);
     if (!notice.empty()) result.notices.push_back(notice);
   }
-  result.primary_rays = result.stats.rays[static_cast<int>(RayKind::kPrimary)];
   return result;
 }
 

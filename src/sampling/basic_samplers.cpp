@@ -1,7 +1,7 @@
 #include "basic_samplers.h"
 
 #include "raylab/core/rng.h"
-#include "stratum.h"
+#include "raylab/sampling/stratum.h"
 
 namespace raylab {
 

@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "raylab/core/rng.h"
-#include "stratum.h"
+#include "raylab/sampling/stratum.h"
 
 namespace raylab {
 

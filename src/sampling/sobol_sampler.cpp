@@ -1,7 +1,7 @@
 #include "sobol_sampler.h"
 
 #include "raylab/core/rng.h"
-#include "stratum.h"
+#include "raylab/sampling/stratum.h"
 
 namespace raylab {
 

@@ -104,7 +104,7 @@ TEST(AdaptiveCorners, FlatImageTracesOnlyTheCornerRays) {
   Scene scene = pixel_plane_scene();
   scene.settings.background = {0.3f, 0.5f, 0.7f};
   const Outcome out = render_with(scene, "adaptive-corners", 3);
-  EXPECT_EQ(out.result.primary_rays, std::uint64_t(kWidth + 1) * (kHeight + 1));
+  EXPECT_EQ(out.result.primary_rays(), std::uint64_t(kWidth + 1) * (kHeight + 1));
   for (std::uint32_t n : out.result.samples_per_pixel) EXPECT_EQ(n, 4u);
   for (const Color& c : out.film.pixels()) {
     EXPECT_FLOAT_EQ(c.x, 0.3f);
@@ -119,7 +119,7 @@ TEST(AdaptiveSampler, FlatImageTracesOnlyTheBaseRays) {
   const auto obj = scene.add_object("wall", scene.add_material(grey));
   scene.geometry.add(Quad{{-100.f, -100.f, 0.f}, {400.f, 0.f, 0.f}, {0.f, 400.f, 0.f}}, obj);
   const Outcome out = render_with(scene, "adaptive", 3);
-  EXPECT_EQ(out.result.primary_rays, std::uint64_t(kWidth) * kHeight);
+  EXPECT_EQ(out.result.primary_rays(), std::uint64_t(kWidth) * kHeight);
   for (const Color& c : out.film.pixels()) EXPECT_FLOAT_EQ(c.y, 0.4f);
 }
 
@@ -187,7 +187,7 @@ TEST(AdaptiveSampler, DeeperLevelsOnlyWhereSamplesStillDiffer) {
   EXPECT_GT(most, 16u);  // the edge's quarters were split further
   std::uint64_t sum = 0;
   for (std::uint32_t n : out.result.samples_per_pixel) sum += n;
-  EXPECT_EQ(sum, out.result.primary_rays);  // method b shares no sample between pixels
+  EXPECT_EQ(sum, out.result.primary_rays());  // method b shares no sample between pixels
 }
 
 TEST(Adaptive, ImageDoesNotDependOnThreadsOrTiles) {
@@ -196,7 +196,7 @@ TEST(Adaptive, ImageDoesNotDependOnThreadsOrTiles) {
   for (const char* sampler : {"adaptive", "adaptive-corners"}) {
     const Outcome a = render_with(scene, sampler, 3, 1, 16);
     const Outcome b = render_with(scene, sampler, 3, 2, 5);
-    EXPECT_EQ(a.result.primary_rays, b.result.primary_rays) << sampler;
+    EXPECT_EQ(a.result.primary_rays(), b.result.primary_rays()) << sampler;
     EXPECT_EQ(a.result.samples_per_pixel, b.result.samples_per_pixel) << sampler;
     for (std::size_t i = 0; i < a.film.pixels().size(); ++i) {
       ASSERT_EQ(a.film.pixels()[i].x, b.film.pixels()[i].x) << sampler << " pixel " << i;

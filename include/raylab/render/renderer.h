@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "raylab/accel/accelerator.h"
@@ -28,19 +29,29 @@ struct RenderOptions {
 struct RenderResult {
   RenderStats stats;
   double seconds = 0.0;  ///< wall-clock time of the pixel loop
-  /// Primary rays traced (= stats.rays[primary]; adaptive samplers trace a varying number).
-  std::uint64_t primary_rays = 0;
   /// Sample positions whose colour went into each pixel (row-major, width * height). For the
   /// uniform samplers this is spp everywhere; adaptive samplers vary it (corner rays shared by
   /// neighbouring pixels count in each).
   std::vector<std::uint32_t> samples_per_pixel;
   /// Notices for the user (an --spp rounded to what the sampler can use), one line each.
   std::vector<std::string> notices;
+
+  /// Primary rays traced (adaptive samplers trace a varying number).
+  std::uint64_t primary_rays() const { return stats.rays[static_cast<int>(RayKind::kPrimary)]; }
 };
+
+/// Every sampler a render accepts besides "auto": the uniform ones (pixel_sampler_names) and
+/// then the adaptive ones (adaptive_sampler_names), in that order.
+std::vector<std::string_view> render_sampler_names();
 
 /// The sampler a render with `settings` uses: settings.sampler, with "auto" resolved (center at
 /// 1 sample per pixel, jittered above).
 std::string resolve_sampler_name(const RenderSettings& settings);
+
+/// Throws UsageError when `settings` name an unknown sampler or filter, a bad filter radius, or
+/// an adaptive sampler with a filter other than the pixel box (adaptive samplers weight by area
+/// within the pixel). render() checks this too; callers check first to fail before any work.
+void check_sampling_settings(const RenderSettings& settings);
 
 /// Renders `scene` with `accel` into `film` (which must match the settings' size). The image is
 /// the same for any thread count and tile order: every sample is seeded by its pixel and index.
