@@ -1,1 +1,104 @@
-// Placeholder: filled in by the work on issue 6.
+#include "raylab/io/ray_file.h"
+
+#include <bit>
+#include <cstring>
+#include <limits>
+
+#include "raylab/core/error.h"
+#include "raylab/io/atomic_file.h"
+#include "raylab/io/read_file.h"
+
+namespace raylab {
+namespace {
+
+// Little-endian 32-bit words, whatever the host's byte order, so the files travel between machines.
+void put_word(unsigned char* out, std::uint32_t w) {
+  for (int k = 0; k < 4; ++k) out[k] = static_cast<unsigned char>(w >> (8 * k));
+}
+std::uint32_t get_word(const unsigned char* in) {
+  std::uint32_t w = 0;
+  for (int k = 0; k < 4; ++k) w |= static_cast<std::uint32_t>(in[k]) << (8 * k);
+  return w;
+}
+void put_float(unsigned char* out, float f) { put_word(out, std::bit_cast<std::uint32_t>(f)); }
+float get_float(const unsigned char* in) { return std::bit_cast<float>(get_word(in)); }
+
+// Throws unless `size` is a whole number of records; names both sizes, so a truncated or foreign
+// file is recognised at once.
+void check_size(std::size_t size, std::size_t record, const char* kind, const std::string& file) {
+  if (size % record == 0) return;
+  throw InputError(file, "size " + std::to_string(size) + " bytes is not a multiple of the " + kind + " record size (" +
+                             std::to_string(record) + " bytes): truncated or not a " + kind + " file");
+}
+
+std::span<const unsigned char> as_bytes(const std::string& s) {
+  return {reinterpret_cast<const unsigned char*>(s.data()), s.size()};
+}
+
+}  // namespace
+
+HitRecord hit_record(const Hit& hit) {
+  if (!hit.valid()) return {std::numeric_limits<float>::infinity(), kMissPrimitive};
+  return {hit.t, hit.prim_id};
+}
+
+std::vector<unsigned char> encode_rays(std::span<const Ray> rays) {
+  std::vector<unsigned char> bytes(rays.size() * kRayRecordBytes);
+  unsigned char* out = bytes.data();
+  for (const Ray& r : rays) {
+    const float f[8] = {r.origin.x,    r.origin.y,    r.origin.z,    r.tmin,
+                        r.direction.x, r.direction.y, r.direction.z, r.tmax};
+    for (int k = 0; k < 8; ++k, out += 4) put_float(out, f[k]);
+  }
+  return bytes;
+}
+
+std::vector<Ray> decode_rays(std::span<const unsigned char> bytes, const std::string& file) {
+  check_size(bytes.size(), kRayRecordBytes, ".rays", file);
+  std::vector<Ray> rays(bytes.size() / kRayRecordBytes);
+  const unsigned char* in = bytes.data();
+  for (Ray& r : rays) {
+    float f[8];
+    for (int k = 0; k < 8; ++k, in += 4) f[k] = get_float(in);
+    r.origin = {f[0], f[1], f[2]};
+    r.tmin = f[3];
+    r.direction = {f[4], f[5], f[6]};
+    r.tmax = f[7];
+  }
+  return rays;
+}
+
+std::vector<unsigned char> encode_hits(std::span<const HitRecord> hits) {
+  std::vector<unsigned char> bytes(hits.size() * kHitRecordBytes);
+  unsigned char* out = bytes.data();
+  for (const HitRecord& h : hits) {
+    put_float(out, h.t);
+    put_word(out + 4, h.prim_id);
+    out += kHitRecordBytes;
+  }
+  return bytes;
+}
+
+std::vector<HitRecord> decode_hits(std::span<const unsigned char> bytes, const std::string& file) {
+  check_size(bytes.size(), kHitRecordBytes, ".hits", file);
+  std::vector<HitRecord> hits(bytes.size() / kHitRecordBytes);
+  const unsigned char* in = bytes.data();
+  for (HitRecord& h : hits) {
+    h.t = get_float(in);
+    h.prim_id = get_word(in + 4);
+    in += kHitRecordBytes;
+  }
+  return hits;
+}
+
+std::vector<Ray> read_rays(const std::string& path) { return decode_rays(as_bytes(read_file(path)), path); }
+
+void write_rays(const std::string& path, std::span<const Ray> rays) { write_file_atomically(path, encode_rays(rays)); }
+
+std::vector<HitRecord> read_hits(const std::string& path) { return decode_hits(as_bytes(read_file(path)), path); }
+
+void write_hits(const std::string& path, std::span<const HitRecord> hits) {
+  write_file_atomically(path, encode_hits(hits));
+}
+
+}  // namespace raylab

@@ -71,12 +71,14 @@ Vec3 cosine_direction(Vec3 n, Pcg32& rng) {
   return normalize(t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + n * std::sqrt(std::max(0.f, 1.f - u)));
 }
 
-// Appends the rays whose slot is set, in pixel order.
-void compact(const std::vector<Ray>& slots, const std::vector<std::uint8_t>& used, RaySet& set) {
+// Appends the rays whose slot is set, in the order of the primary rays, each tagged with the
+// pixel of its primary ray.
+void compact(const std::vector<Ray>& slots, const std::vector<std::uint8_t>& used,
+             const std::vector<std::uint32_t>& pixel, RaySet& set) {
   for (std::size_t i = 0; i < slots.size(); ++i) {
     if (!used[i]) continue;
     set.rays.push_back(slots[i]);
-    set.pixel.push_back(static_cast<std::uint32_t>(i));
+    set.pixel.push_back(pixel[i]);
   }
 }
 
@@ -126,12 +128,18 @@ RaySets make_ray_sets(const Scene& scene, const Accelerator& reference, const Ra
   const std::size_t n = primary.rays.size();
   primary.pixel.resize(n);
   for (std::size_t i = 0; i < n; ++i) primary.pixel[i] = static_cast<std::uint32_t>(i);
+  add_secondary_rays(scene, reference, scene.lights.empty() ? nullptr : &scene.lights.front(), options.seed, sets);
+  return sets;
+}
 
-  // Each pixel fills its own slots (in parallel), then the used slots are gathered in pixel
-  // order: the result is the same whatever the thread count.
+void add_secondary_rays(const Scene& scene, const Accelerator& reference, const Light* light, std::uint64_t seed,
+                        RaySets& sets) {
+  const RaySet& primary = sets.sets[static_cast<int>(BenchRayKind::kPrimary)];
+  const std::size_t n = primary.rays.size();
+  // Each primary ray fills its own slots (in parallel), then the used slots are gathered in
+  // primary-ray order: the result is the same whatever the thread count.
   std::vector<Ray> shadow(n), diffuse(n);
   std::vector<std::uint8_t> has_shadow(n, 0), has_diffuse(n, 0);
-  const Light* light = scene.lights.empty() ? nullptr : &scene.lights.front();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       Ray ray = primary.rays[i];
@@ -139,11 +147,12 @@ RaySets make_ray_sets(const Scene& scene, const Accelerator& reference, const Ra
       if (!reference.intersect(ray, hit)) continue;
       const SurfaceInteraction si = surface_at(scene, ray, hit);
       const Vec3 ng = si.geometric_normal;
+      const std::uint64_t pixel = primary.pixel[i];
       if (light) {
-        Pcg32 rng(hash_seed(i, options.seed, kLightStream));
+        Pcg32 rng(hash_seed(pixel, seed, kLightStream));
         has_shadow[i] = shadow_ray(*light, si.position, ng, rng, shadow[i]) ? 1 : 0;
       }
-      Pcg32 rng(hash_seed(i, options.seed, kBounceStream));
+      Pcg32 rng(hash_seed(pixel, seed, kBounceStream));
       const Vec3 dir = cosine_direction(ng, rng);
       diffuse[i].origin = offset_origin(si.position, ng, dir);
       diffuse[i].direction = dir;
@@ -152,9 +161,12 @@ RaySets make_ray_sets(const Scene& scene, const Accelerator& reference, const Ra
       has_diffuse[i] = 1;
     }
   });
-  compact(shadow, has_shadow, sets.sets[static_cast<int>(BenchRayKind::kShadow)]);
-  compact(diffuse, has_diffuse, sets.sets[static_cast<int>(BenchRayKind::kDiffuse)]);
-  return sets;
+  RaySet& shadows = sets.sets[static_cast<int>(BenchRayKind::kShadow)];
+  RaySet& diffuses = sets.sets[static_cast<int>(BenchRayKind::kDiffuse)];
+  shadows = {};
+  diffuses = {};
+  compact(shadow, has_shadow, primary.pixel, shadows);
+  compact(diffuse, has_diffuse, primary.pixel, diffuses);
 }
 
 }  // namespace raylab

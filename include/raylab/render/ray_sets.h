@@ -61,4 +61,11 @@ std::vector<Ray> primary_rays(const Scene& scene, int width, int height);
 /// drawn from (pixel, seed). No lights: no shadow rays. Throws UsageError for a size < 1.
 RaySets make_ray_sets(const Scene& scene, const Accelerator& reference, const RaySetOptions& options = {});
 
+/// Fills the shadow and diffuse sets of `sets` from its primary set (rays and pixels, in any
+/// order, e.g. the 4x4 tiles of `raylab bench`) as make_ray_sets does, toward `light` (nullptr:
+/// no shadow rays). Random numbers are drawn per (pixel, seed), so a pixel's rays do not depend on
+/// the order of the primary rays. Secondary rays keep the order of their primary rays.
+void add_secondary_rays(const Scene& scene, const Accelerator& reference, const Light* light, std::uint64_t seed,
+                        RaySets& sets);
+
 }  // namespace raylab
