@@ -44,6 +44,7 @@ struct RenderArgs {
   std::string accel = "bvh";
   AccelArgs structure;
   int threads = 0;
+  std::string packets = "on";
   bool stats = false;
   bool quiet = false;
   bool allow_outside_paths = false;
@@ -198,6 +199,7 @@ int run(const RenderArgs& args) {
   RenderOptions options;
   options.threads = args.threads;
   options.count_traversal = args.stats;
+  options.packets = args.packets == "on";
   if (bar) options.on_progress = [&bar](int done, int total) { bar->update(done, total); };
   const RenderResult result = render(scene, *accel, film, options);
   const double mrays = result.seconds > 0 ? result.stats.total_rays() / result.seconds * 1e-6 : 0.0;
@@ -264,6 +266,12 @@ CommandRunner add_render_command(CLI::App& app) {
   add_accel_parameter_options(*cmd, args->structure);
   cmd->add_option("--threads", args->threads, "Worker threads; 0 = all cores")
       ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  cmd->add_option("--packets", args->packets,
+                  "Trace primary rays in packets of 16 and shadow rays toward point and directional lights as "
+                  "one packet per light: on or off. The image and ray counts are identical either way; the "
+                  "adaptive samplers always trace single rays")
+      ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   // CLI11 (2.1) would read "-1" into the unsigned seed as 2^64 - 1 without a word.
   cmd->add_option("--seed", args->seed, "Seed of every random choice (default: the scene's, 0)")

@@ -4,7 +4,9 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <span>
 
+#include "packet_tracing.h"
 #include "raylab/core/error.h"
 #include "raylab/render/adaptive.h"
 #include "raylab/render/camera.h"
@@ -75,22 +77,36 @@ RenderResult render_uniform(const Scene& scene, const Accelerator& accel, Film& 
                                                              std::min(film.height(), r.y1 + margin)});
       acc = tiles[t].get();
     }
-    for (int py = r.y0; py < r.y1; ++py) {
-      for (int px = r.x0; px < r.x1; ++px) {
-        Color sum{0.f};
-        for (int i = 0; i < spp; ++i) {
-          // Every random choice of this sample comes from (pixel, index, seed): no shared state.
-          const Sample2 u = sampler.sample(px, py, i);
-          const float x = static_cast<float>(px) + u.x;
-          const float y = static_cast<float>(py) + u.y;
-          const Color c = detail::trace_image_position(ctx, camera, x, y, sample_path_seed(sampler.seed(), px, py, i));
-          if (acc) {
-            acc->add(filter, x, y, c);
-          } else {
-            sum += c;
-          }
+    // Sample i of pixel (px, py) has colour colour_of(i, x, y), at image position (x, y).
+    auto add_pixel = [&](int px, int py, auto&& colour_of) {
+      Color sum{0.f};
+      for (int i = 0; i < spp; ++i) {
+        // Every random choice of this sample comes from (pixel, index, seed): no shared state.
+        const Sample2 u = sampler.sample(px, py, i);
+        const float x = static_cast<float>(px) + u.x;
+        const float y = static_cast<float>(py) + u.y;
+        const Color c = colour_of(i, x, y);
+        if (acc) {
+          acc->add(filter, x, y, c);
+        } else {
+          sum += c;
         }
-        if (!acc) film.at(px, py) = sum * inv_spp;  // box filter over the pixel: the plain average
+      }
+      if (!acc) film.at(px, py) = sum * inv_spp;  // box filter over the pixel: the plain average
+    };
+    if (options.packets) {
+      // The same samples, seeds and sums in the same order; only the tracing is grouped.
+      detail::TilePacketTracer tracer(ctx, camera, sampler);
+      tracer.for_each_pixel(r, [&](int px, int py, std::span<const Color> colours) {
+        add_pixel(px, py, [&](int i, float, float) { return colours[static_cast<std::size_t>(i)]; });
+      });
+    } else {
+      for (int py = r.y0; py < r.y1; ++py) {
+        for (int px = r.x0; px < r.x1; ++px) {
+          add_pixel(px, py, [&](int i, float x, float y) {
+            return detail::trace_image_position(ctx, camera, x, y, sample_path_seed(sampler.seed(), px, py, i));
+          });
+        }
       }
     }
     const int done = tiles_done.fetch_add(1, std::memory_order_relaxed) + 1;

@@ -36,53 +36,69 @@ struct LightSample {
   Color radiance;  // intensity share of this sample
 };
 
-// Contribution of `light` at the shading point, averaging `samples` stratified positions for
-// area lights: a soft shadow is the fraction of the light's samples that the point sees.
-Color shade_light(const TraceContext& ctx, const Light& light, const Material& m, Color base, Vec3 p, Vec3 n, Vec3 ng,
-                  Vec3 view, Pcg32& rng) {
-  int grid = 1;
-  if (light.kind == Light::Kind::kSphere || light.kind == Light::Kind::kQuad) {
-    grid = std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<float>(std::max(1, light.samples))))));
+// Side of the square grid of stratified samples shading takes of `light` (1 for point and
+// directional lights).
+int sample_grid(const Light& light) {
+  if (light.kind != Light::Kind::kSphere && light.kind != Light::Kind::kQuad) return 1;
+  return std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<float>(std::max(1, light.samples))))));
+}
+
+// Sample (sx, sy) of the `grid` x `grid` stratification of `light` seen from `p` (shading normal
+// `n`, geometric normal `ng`): fills `ls` and the shadow ray toward it. Returns false when no
+// shadow ray is cast (no distance to the sample, or the surface faces away). Draws two numbers
+// from `rng` when grid > 1 and none otherwise, which is what lets the packet path precompute the
+// shadow rays of single-sample lights. One function for both paths, so that they agree bit for bit.
+bool sample_light(const Light& light, int grid, int sx, int sy, Vec3 p, Vec3 n, Vec3 ng, Pcg32* rng, LightSample& ls,
+                  Ray& shadow) {
+  if (light.kind == Light::Kind::kDirectional) {
+    ls.wi = normalize(-light.direction);
+    ls.distance = INFINITY;
+  } else {
+    Vec3 target = light.position;
+    if (grid > 1) {
+      const float u = (static_cast<float>(sx) + rng->next_float()) / static_cast<float>(grid);
+      const float v = (static_cast<float>(sy) + rng->next_float()) / static_cast<float>(grid);
+      if (light.kind == Light::Kind::kQuad) {
+        target = light.position + light.edge_u * u + light.edge_v * v;
+      } else {
+        // Uniform point on the sphere (z = 1 - 2u, azimuth 2 pi v).
+        const float z = 1.f - 2.f * u;
+        const float r = std::sqrt(std::max(0.f, 1.f - z * z));
+        const float phi = 6.2831853f * v;
+        target = light.position + Vec3{r * std::cos(phi), r * std::sin(phi), z} * light.radius;
+      }
+    }
+    const Vec3 to = target - p;
+    ls.distance = length(to);
+    if (!(ls.distance > 0.f)) return false;
+    ls.wi = to / ls.distance;
   }
-  const float share = 1.f / static_cast<float>(grid * grid);
+  ls.radiance = light.intensity * (1.f / static_cast<float>(grid * grid));
+  if (light.falloff && std::isfinite(ls.distance)) ls.radiance /= ls.distance * ls.distance;
+  // Only surfaces that face the light cast a shadow ray (SPD testing procedure).
+  if (dot(n, ls.wi) <= 0.f || dot(ng, ls.wi) <= 0.f) return false;
+  shadow.origin = offset_origin(p, ng, ls.wi);
+  shadow.direction = ls.wi;
+  shadow.tmin = 0.f;
+  shadow.tmax = std::isfinite(ls.distance) ? ls.distance * (1.f - kShadowShorten) : INFINITY;
+  return true;
+}
+
+// Contribution of `light` at the shading point, averaging stratified positions for area lights:
+// a soft shadow is the fraction of the light's samples that the point sees. `answer` replaces
+// the shadow ray when it is decided (single-sample lights only).
+Color shade_light(const TraceContext& ctx, const Light& light, const Material& m, Color base, Vec3 p, Vec3 n, Vec3 ng,
+                  Vec3 view, Pcg32& rng, ShadowAnswer answer) {
+  const int grid = sample_grid(light);
   Color sum{0.f};
   for (int sy = 0; sy < grid; ++sy) {
     for (int sx = 0; sx < grid; ++sx) {
-      Vec3 target;
       LightSample ls;
-      if (light.kind == Light::Kind::kDirectional) {
-        ls.wi = normalize(-light.direction);
-        ls.distance = INFINITY;
-      } else {
-        target = light.position;
-        if (grid > 1) {
-          const float u = (static_cast<float>(sx) + rng.next_float()) / static_cast<float>(grid);
-          const float v = (static_cast<float>(sy) + rng.next_float()) / static_cast<float>(grid);
-          if (light.kind == Light::Kind::kQuad) {
-            target = light.position + light.edge_u * u + light.edge_v * v;
-          } else {
-            // Uniform point on the sphere (z = 1 - 2u, azimuth 2 pi v).
-            const float z = 1.f - 2.f * u;
-            const float r = std::sqrt(std::max(0.f, 1.f - z * z));
-            const float phi = 6.2831853f * v;
-            target = light.position + Vec3{r * std::cos(phi), r * std::sin(phi), z} * light.radius;
-          }
-        }
-        const Vec3 to = target - p;
-        ls.distance = length(to);
-        if (!(ls.distance > 0.f)) continue;
-        ls.wi = to / ls.distance;
-      }
-      ls.radiance = light.intensity * share;
-      if (light.falloff && std::isfinite(ls.distance)) ls.radiance /= ls.distance * ls.distance;
-      // Only surfaces that face the light cast a shadow ray (SPD testing procedure).
-      if (dot(n, ls.wi) <= 0.f || dot(ng, ls.wi) <= 0.f) continue;
       Ray shadow;
-      shadow.origin = offset_origin(p, ng, ls.wi);
-      shadow.direction = ls.wi;
-      shadow.tmin = 0.f;
-      shadow.tmax = std::isfinite(ls.distance) ? ls.distance * (1.f - kShadowShorten) : INFINITY;
-      if (cast_shadow_ray(ctx, shadow)) continue;
+      if (!sample_light(light, grid, sx, sy, p, n, ng, &rng, ls, shadow)) continue;
+      const bool blocked =
+          answer == ShadowAnswer::kTrace ? cast_shadow_ray(ctx, shadow) : answer == ShadowAnswer::kBlocked;
+      if (blocked) continue;
       sum += phong(m, base, n, view, ls.wi, ls.radiance);
     }
   }
@@ -116,6 +132,13 @@ bool WhittedIntegrator::refract(Vec3 d, Vec3 n, float eta, Vec3& out) {
   return true;
 }
 
+bool WhittedIntegrator::is_single_sample(const Light& light) { return sample_grid(light) == 1; }
+
+bool WhittedIntegrator::single_sample_shadow_ray(const Light& light, const SurfaceInteraction& si, Ray& shadow) {
+  LightSample ls;
+  return sample_light(light, 1, 0, 0, si.position, si.shading_normal, si.geometric_normal, nullptr, ls, shadow);
+}
+
 Color WhittedIntegrator::trace(const TraceContext& ctx, Ray ray, int depth, RayKind kind, Pcg32& rng,
                                PrimaryFeature* feature) {
   Hit hit;
@@ -123,9 +146,12 @@ Color WhittedIntegrator::trace(const TraceContext& ctx, Ray ray, int depth, RayK
       ctx.count_traversal ? ctx.accel.intersect_counted(ray, hit, ctx.stats.traversal) : ctx.accel.intersect(ray, hit);
   ctx.stats.count(kind, found);
   if (!found) return background(ctx.scene.settings, ray.direction);
+  return shade(ctx, ray, surface_at(ctx.scene, ray, hit), depth, rng, {}, feature);
+}
 
+Color WhittedIntegrator::shade(const TraceContext& ctx, const Ray& ray, const SurfaceInteraction& si, int depth,
+                               Pcg32& rng, std::span<const ShadowAnswer> shadows, PrimaryFeature* feature) {
   const Scene& scene = ctx.scene;
-  const SurfaceInteraction si = surface_at(scene, ray, hit);
   const Material& m = scene.materials[scene.objects[si.object_id].material];
   const Vec3 d = normalize(ray.direction);
   const Vec3 n = si.shading_normal;
@@ -138,7 +164,10 @@ Color WhittedIntegrator::trace(const TraceContext& ctx, Ray ray, int depth, RayK
   }
 
   Color result = m.emission + scene.settings.ambient * base * m.kd;
-  for (const Light& light : scene.lights) result += shade_light(ctx, light, m, base, si.position, n, ng, view, rng);
+  for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+    const ShadowAnswer answer = shadows.empty() ? ShadowAnswer::kTrace : shadows[l];
+    result += shade_light(ctx, scene.lights[l], m, base, si.position, n, ng, view, rng, answer);
+  }
 
   if (depth >= scene.settings.max_depth) return result;
 

@@ -20,6 +20,11 @@ struct RenderOptions {
   int threads = 0;               ///< worker threads; 0 = all cores
   int tile_size = 16;            ///< square tiles of this many pixels per side
   bool count_traversal = false;  ///< count nodes and primitive tests (slower); see RenderStats
+  /// Uniform samplers: trace primary rays in packets of 16 (4x4 pixels at 1 spp, 2x2 pixels x 4
+  /// samples at 4 spp, one pixel's samples above) and the shadow rays toward point and directional
+  /// lights as one packet per light. The image and the ray counts are the same bits either way;
+  /// the adaptive samplers always trace single rays.
+  bool packets = true;
   /// Called with (tiles done, tiles total) each time a tile finishes, from whichever worker
   /// finished it (so it must be thread-safe); may be empty.
   std::function<void(int, int)> on_progress;

@@ -4,10 +4,12 @@
 /// refraction, recursively, following the rules of the SPD testing procedure.
 
 #include <cstdint>
+#include <span>
 
 #include "raylab/accel/accelerator.h"
 #include "raylab/core/rng.h"
 #include "raylab/core/stats.h"
+#include "raylab/geometry/shading.h"
 #include "raylab/scene/scene.h"
 
 namespace raylab {
@@ -27,6 +29,14 @@ struct PrimaryFeature {
   Vec3 normal{0.f, 0.f, 0.f};  ///< unit shading normal there (zero when nothing was hit)
 };
 
+/// A light's shadow test decided before shading, for WhittedIntegrator::shade: the packet path
+/// traces the shadow rays of a group of hit points together and passes the answers in.
+enum class ShadowAnswer : std::uint8_t {
+  kTrace = 0,  ///< not decided: shading casts the shadow ray(s) itself
+  kVisible,    ///< the single shadow ray toward this light is unobstructed (already counted)
+  kBlocked,    ///< the single shadow ray toward this light is blocked (already counted)
+};
+
 /// Whitted-style recursive ray tracer.
 ///  - Depth: a ray at depth `max_depth` is the last; secondary rays start at depth 2.
 ///  - Shadow rays are cast only when the surface faces the light (N.L > 0).
@@ -39,6 +49,23 @@ class WhittedIntegrator {
   /// given, it receives what `ray` itself hit (not what later bounces hit).
   static Color trace(const TraceContext& ctx, Ray ray, int depth, RayKind kind, Pcg32& rng,
                      PrimaryFeature* feature = nullptr);
+
+  /// What trace() does once the closest hit of `ray` is known: the radiance leaving surface
+  /// point `si` (found by `ray`, of depth `depth`) back along `ray`, reflection and refraction
+  /// included. `shadows` is empty (every light casts its own shadow rays) or holds one answer per
+  /// light of the scene; a decided answer replaces the shadow ray of a single-sample light (see
+  /// single_sample_shadow_ray), and is used only where that function returns true. trace() is
+  /// exactly count + intersect + this, so both give the same bits.
+  static Color shade(const TraceContext& ctx, const Ray& ray, const SurfaceInteraction& si, int depth, Pcg32& rng,
+                     std::span<const ShadowAnswer> shadows = {}, PrimaryFeature* feature = nullptr);
+
+  /// True when shading toward `light` casts one shadow ray at a fixed position and draws no random
+  /// numbers: point and directional lights, and area lights whose `samples` round to a 1x1 grid.
+  static bool is_single_sample(const Light& light);
+
+  /// The shadow ray shading casts toward single-sample `light` from `si`, in `shadow`; false when
+  /// it casts none (the surface faces away from the light, or sits on it).
+  static bool single_sample_shadow_ray(const Light& light, const SurfaceInteraction& si, Ray& shadow);
 
   /// The background seen by a ray leaving in direction `dir`.
   static Color background(const RenderSettings& s, Vec3 dir);
