@@ -31,4 +31,8 @@ CommandRunner add_compare_command(CLI::App& app);
 /// against a reference image, side by side.
 CommandRunner add_quality_command(CLI::App& app);
 
+/// `raylab bench SCENE [--rays KIND] [--against embree|none] ...`: our accelerator against Embree
+/// on the same rays; exits 4 when the two disagree on some ray.
+CommandRunner add_bench_command(CLI::App& app);
+
 }  // namespace raylab::cli

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   const raylab::cli::CommandRunner run_convert = raylab::cli::add_convert_command(app);
   const raylab::cli::CommandRunner run_compare = raylab::cli::add_compare_command(app);
   const raylab::cli::CommandRunner run_quality = raylab::cli::add_quality_command(app);
+  const raylab::cli::CommandRunner run_bench = raylab::cli::add_bench_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("convert")) return run_convert();
     if (app.got_subcommand("compare")) return run_compare();
     if (app.got_subcommand("quality")) return run_quality();
+    if (app.got_subcommand("bench")) return run_bench();
   } catch (const raylab::UsageError& e) {
     std::fprintf(stderr, "raylab: %s\n", e.what());
     return 2;
