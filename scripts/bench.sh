@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Measures what docs/performance.md reports. Usage: scripts/bench.sh [BUILD_DIR]
-# Render times of the demo at 1280x720 (1 and 16 spp, 1 and 2 threads), then the BVH against
-# Embree on the Stanford bunny (if the benchmark was built). Figures go to stdout.
+# Render times of the demo at 1280x720 (1 and 16 spp, 1 and 2 threads), then `raylab bench` (our
+# BVH against Embree 3 on the same rays) on the scenes of issue 6. Figures go to stdout.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build/release}
@@ -22,9 +22,22 @@ for spp in 1 16; do
   done
 done
 
-bunny=../shared/scenes/stanford-bunny.obj
-if [ -x "$build/bin/bvh_vs_embree" ] && [ -f "$bunny" ]; then
-  echo
-  echo "## BVH and Embree on $bunny"
-  "$build/bin/bvh_vs_embree" "$bunny"
-fi
+# Our BVH against Embree 3 on the same rays (`raylab bench`, docs/command-line.md) on the scenes of
+# issue 6, with 1 and 2 threads: the bunny on a ground quad, igea, spd:balls (analytic spheres as
+# Embree user geometry) and spd:mount at level 10 (2.1M triangles). Each table is preceded by the
+# command that produced it; a scene whose file is missing is skipped with a note.
+shared=../shared/scenes
+for scene in bench/scenes/bunny-on-ground.json "$shared/igea.ply" spd:balls 'spd:mount?size=10'; do
+  case "$scene" in
+    spd:*) ;;
+    *) if [ ! -f "$scene" ]; then echo; echo "(skipped $scene: not found)"; continue; fi ;;
+  esac
+  for threads in 1 2; do
+    cmd=("$raylab" bench "$scene" --allow-outside-paths --threads "$threads" --repeats 5 -q)
+    echo
+    echo "## \`raylab bench $scene --allow-outside-paths --threads $threads --repeats 5\`"
+    echo '```'
+    "${cmd[@]}"
+    echo '```'
+  done
+done
