@@ -3,14 +3,17 @@
 #include <array>
 
 #include "raylab/accel/brute_force.h"
-#include "raylab/accel/bvh4.h"
 #include "raylab/accel/embree_accel.h"
+#include "raylab/accel/wide_bvh.h"
 #include "raylab/core/error.h"
 
 namespace raylab {
 namespace {
 
-constexpr std::array<std::string_view, 6> kNames = {"bvh", "bvh2", "grid", "octree", "brute", "embree"};
+// "bvh" is the wide BVH at the width this build tests natively (8 with AVX2, 16 with AVX-512);
+// the explicit widths are there to compare them side by side.
+constexpr std::array<std::string_view, 9> kNames = {"bvh",  "bvh2",   "bvh4",  "bvh8",  "bvh16",
+                                                    "grid", "octree", "brute", "embree"};
 
 }  // namespace
 
@@ -32,7 +35,10 @@ std::unique_ptr<Accelerator> make_accelerator(std::string_view name, const Geome
 
 std::unique_ptr<Accelerator> make_accelerator(std::string_view name, const Geometry& geometry,
                                               std::span<const std::uint32_t> ids, const AccelConfig& config) {
-  if (name == "bvh") return std::make_unique<Bvh4>(geometry, ids, config.bvh);
+  if (name == "bvh") return std::make_unique<WideBvh<simd::kNativeBoxWidth>>(geometry, ids, config.bvh);
+  if (name == "bvh4") return std::make_unique<WideBvh<4>>(geometry, ids, config.bvh);
+  if (name == "bvh8") return std::make_unique<WideBvh<8>>(geometry, ids, config.bvh);
+  if (name == "bvh16") return std::make_unique<WideBvh<16>>(geometry, ids, config.bvh);
   if (name == "bvh2") return std::make_unique<Bvh>(geometry, ids, config.bvh);
   if (name == "grid") return std::make_unique<UniformGrid>(geometry, ids, config.grid);
   if (name == "octree") return std::make_unique<Octree>(geometry, ids, config.octree);

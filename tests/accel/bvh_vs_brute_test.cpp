@@ -15,8 +15,8 @@
 #include "accel_compare_util.h"
 #include "raylab/accel/brute_force.h"
 #include "raylab/accel/bvh.h"
-#include "raylab/accel/bvh4.h"
 #include "raylab/accel/factory.h"
+#include "raylab/accel/wide_bvh.h"
 #include "raylab/core/error.h"
 #include "test_scenes.h"
 
@@ -77,9 +77,9 @@ TEST_P(BvhEdgeCases, SinglePrimitive) {
 }
 
 std::string param_name(const ::testing::TestParamInfo<std::string>& info) { return info.param; }
-INSTANTIATE_TEST_SUITE_P(Accel, BvhVsBrute, ::testing::Values("bvh", "bvh2"), param_name);
-INSTANTIATE_TEST_SUITE_P(Accel, BvhPacket, ::testing::Values("bvh", "bvh2"), param_name);
-INSTANTIATE_TEST_SUITE_P(Accel, BvhEdgeCases, ::testing::Values("bvh", "bvh2"), param_name);
+INSTANTIATE_TEST_SUITE_P(Accel, BvhVsBrute, ::testing::Values("bvh", "bvh2", "bvh4", "bvh8", "bvh16"), param_name);
+INSTANTIATE_TEST_SUITE_P(Accel, BvhPacket, ::testing::Values("bvh", "bvh2", "bvh4", "bvh8", "bvh16"), param_name);
+INSTANTIATE_TEST_SUITE_P(Accel, BvhEdgeCases, ::testing::Values("bvh", "bvh2", "bvh4", "bvh8", "bvh16"), param_name);
 
 TEST(AccelFactory, NamesAndUnknownName) {
   const auto names = accelerator_names();
@@ -91,8 +91,10 @@ TEST(AccelFactory, NamesAndUnknownName) {
   EXPECT_EQ(make_accelerator("bvh", g)->info().name, "bvh");
   EXPECT_EQ(make_accelerator("bvh2", g)->info().name, "bvh2");
   EXPECT_EQ(make_accelerator("brute", g)->info().name, "brute");
-  // "bvh" is the 4-wide tree, "bvh2" the binary one.
-  EXPECT_NE(dynamic_cast<const Bvh4*>(make_accelerator("bvh", g).get()), nullptr);
+  // "bvh" is the wide tree at the build's native width, "bvh2" the binary one.
+  EXPECT_NE(dynamic_cast<const WideBvh<simd::kNativeBoxWidth>*>(make_accelerator("bvh", g).get()), nullptr);
+  EXPECT_NE(dynamic_cast<const WideBvh<4>*>(make_accelerator("bvh4", g).get()), nullptr);
+  EXPECT_NE(dynamic_cast<const WideBvh<16>*>(make_accelerator("bvh16", g).get()), nullptr);
   EXPECT_NE(dynamic_cast<const Bvh*>(make_accelerator("bvh2", g).get()), nullptr);
   try {
     make_accelerator("nope", g);

@@ -42,6 +42,12 @@ inline Float4 operator-(const Float4& a, const Float4& b) {
 inline Float4 operator*(const Float4& a, const Float4& b) {
   return {{a.v[0] * b.v[0], a.v[1] * b.v[1], a.v[2] * b.v[2], a.v[3] * b.v[3]}};
 }
+inline Float4 operator+(const Float4& a, const Float4& b) {
+  return {{a.v[0] + b.v[0], a.v[1] + b.v[1], a.v[2] + b.v[2], a.v[3] + b.v[3]}};
+}
+inline Float4 operator/(const Float4& a, const Float4& b) {
+  return {{a.v[0] / b.v[0], a.v[1] / b.v[1], a.v[2] / b.v[2], a.v[3] / b.v[3]}};
+}
 /// Lane-wise a < b ? a : b (so b when either is NaN).
 inline Float4 min(const Float4& a, const Float4& b) {
   Float4 r;
@@ -58,6 +64,18 @@ inline Float4 max(const Float4& a, const Float4& b) {
 inline int less_equal_mask(const Float4& a, const Float4& b) {
   int m = 0;
   for (int i = 0; i < 4; ++i) m |= (a.v[i] <= b.v[i] ? 1 : 0) << i;
+  return m;
+}
+/// Bit i set where a[i] < b[i] (clear where either is NaN).
+inline int less_mask(const Float4& a, const Float4& b) {
+  int m = 0;
+  for (int i = 0; i < 4; ++i) m |= (a.v[i] < b.v[i] ? 1 : 0) << i;
+  return m;
+}
+/// Bit i set where a[i] == b[i] (clear where either is NaN).
+inline int equal_mask(const Float4& a, const Float4& b) {
+  int m = 0;
+  for (int i = 0; i < 4; ++i) m |= (a.v[i] == b.v[i] ? 1 : 0) << i;
   return m;
 }
 
@@ -80,12 +98,18 @@ struct Float4 {
 
 inline Float4 operator-(Float4 a, Float4 b) { return {_mm_sub_ps(a.v, b.v)}; }
 inline Float4 operator*(Float4 a, Float4 b) { return {_mm_mul_ps(a.v, b.v)}; }
+inline Float4 operator+(Float4 a, Float4 b) { return {_mm_add_ps(a.v, b.v)}; }
+inline Float4 operator/(Float4 a, Float4 b) { return {_mm_div_ps(a.v, b.v)}; }
 /// Lane-wise a < b ? a : b (so b when either is NaN): MINPS.
 inline Float4 min(Float4 a, Float4 b) { return {_mm_min_ps(a.v, b.v)}; }
 /// Lane-wise a > b ? a : b (so b when either is NaN): MAXPS.
 inline Float4 max(Float4 a, Float4 b) { return {_mm_max_ps(a.v, b.v)}; }
 /// Bit i set where a[i] <= b[i] (clear where either is NaN).
 inline int less_equal_mask(Float4 a, Float4 b) { return _mm_movemask_ps(_mm_cmple_ps(a.v, b.v)); }
+/// Bit i set where a[i] < b[i] (clear where either is NaN).
+inline int less_mask(Float4 a, Float4 b) { return _mm_movemask_ps(_mm_cmplt_ps(a.v, b.v)); }
+/// Bit i set where a[i] == b[i] (clear where either is NaN).
+inline int equal_mask(Float4 a, Float4 b) { return _mm_movemask_ps(_mm_cmpeq_ps(a.v, b.v)); }
 
 }  // namespace sse
 using Float4 = sse::Float4;

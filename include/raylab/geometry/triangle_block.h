@@ -1,0 +1,94 @@
+#pragma once
+/// \file
+/// Four triangles stored lane by lane, tested against one ray with SIMD: the leaf format of the
+/// wide BVH. The test is the watertight test of triangle.h done four lanes at a time with the
+/// same operations in the same order, so each lane gives bit for bit what `intersect_triangle`
+/// gives for that triangle.
+
+#include <cstdint>
+#include <limits>
+
+#include "raylab/geometry/triangle.h"
+#include "raylab/simd/double4.h"
+#include "raylab/simd/float4.h"
+
+namespace raylab {
+
+/// Four triangles, structure of arrays: `p[vertex][axis][lane]`, and the primitive id of each
+/// lane. An unused lane has id kNoPrimitive and all vertices at the origin (a degenerate
+/// triangle, which the test never reports as hit). 160 bytes.
+struct alignas(16) TriangleBlock4 {
+  /// The id of an unused lane.
+  static constexpr std::uint32_t kNoPrimitive = std::numeric_limits<std::uint32_t>::max();
+
+  float p[3][3][4];
+  std::uint32_t id[4];
+
+  /// Stores `tri` with primitive id `prim_id` in lane `lane`.
+  void set(int lane, const Triangle& tri, std::uint32_t prim_id) {
+    const Vec3* v[3] = {&tri.p0, &tri.p1, &tri.p2};
+    for (int k = 0; k < 3; ++k) {
+      for (int a = 0; a < 3; ++a) p[k][a][lane] = (*v[k])[a];
+    }
+    id[lane] = prim_id;
+  }
+  /// Triangle of lane `lane`.
+  Triangle triangle(int lane) const {
+    Triangle t;
+    t.p0 = {p[0][0][lane], p[0][1][lane], p[0][2][lane]};
+    t.p1 = {p[1][0][lane], p[1][1][lane], p[1][2][lane]};
+    t.p2 = {p[2][0][lane], p[2][1][lane], p[2][2][lane]};
+    return t;
+  }
+};
+static_assert(sizeof(TriangleBlock4) == 160, "TriangleBlock4 must stay 160 bytes");
+
+/// An empty block: every lane unused.
+inline TriangleBlock4 empty_triangle_block() {
+  TriangleBlock4 b{};
+  for (int i = 0; i < 4; ++i) b.id[i] = TriangleBlock4::kNoPrimitive;
+  return b;
+}
+
+/// The watertight test of `intersect_triangle` on the four lanes of `block`. Returns a bit mask
+/// of the lanes hit with tmin <= t <= tmax (note: `<=`, so the caller can apply the exact
+/// `t < tie_limit` rule lane by lane), and their t, u, v. Lanes that are unused or degenerate
+/// are never set. Lanes are not checked against the primitive kind: the caller skips lanes whose
+/// id is not a triangle's.
+inline int intersect_triangle_block(const TriangleBlock4& block, const WatertightRay& wr, float tmin, float tmax,
+                                    float t_out[4], float u_out[4], float v_out[4]) {
+  using simd::Double4;
+  using simd::Float4;
+  const Float4 ox = Float4::broadcast(wr.origin[wr.kx]), oy = Float4::broadcast(wr.origin[wr.ky]),
+               oz = Float4::broadcast(wr.origin[wr.kz]);
+  const Float4 sx = Float4::broadcast(wr.sx), sy = Float4::broadcast(wr.sy), sz = Float4::broadcast(wr.sz);
+  // Vertex k relative to the origin, on the permuted axes (as `tri.pk - wr.origin` then [k?]).
+  auto rel = [&](int k, int axis, Float4 o) { return Float4::load(block.p[k][axis]) - o; };
+  const Float4 akz = rel(0, wr.kz, oz), bkz = rel(1, wr.kz, oz), ckz = rel(2, wr.kz, oz);
+  const Float4 ax = rel(0, wr.kx, ox) - sx * akz, ay = rel(0, wr.ky, oy) - sy * akz;
+  const Float4 bx = rel(1, wr.kx, ox) - sx * bkz, by = rel(1, wr.ky, oy) - sy * bkz;
+  const Float4 cx = rel(2, wr.kx, ox) - sx * ckz, cy = rel(2, wr.ky, oy) - sy * ckz;
+  // Edge functions with exact products, rounded once to float, as in intersect_triangle.
+  const Double4 dax = Double4::from(ax), day = Double4::from(ay), dbx = Double4::from(bx), dby = Double4::from(by),
+                dcx = Double4::from(cx), dcy = Double4::from(cy);
+  const Float4 e0 = (dcx * dby - dcy * dbx).to_float();
+  const Float4 e1 = (dax * dcy - day * dcx).to_float();
+  const Float4 e2 = (dbx * day - dby * dax).to_float();
+  const Float4 zero = Float4::broadcast(0.f);
+  const int any_negative = less_mask(e0, zero) | less_mask(e1, zero) | less_mask(e2, zero);
+  const int any_positive = less_mask(zero, e0) | less_mask(zero, e1) | less_mask(zero, e2);
+  const Float4 det = e0 + e1 + e2;
+  int mask = ~(any_negative & any_positive) & ~equal_mask(det, zero) & 0xF;
+  if (mask == 0) return 0;
+  const Float4 rcp = Float4::broadcast(1.f) / det;
+  const Float4 th = (e0 * (sz * akz) + e1 * (sz * bkz) + e2 * (sz * ckz)) * rcp;
+  // tmin <= th <= tmax, false for NaN.
+  mask &= less_equal_mask(Float4::broadcast(tmin), th) & less_equal_mask(th, Float4::broadcast(tmax));
+  if (mask == 0) return 0;
+  th.store(t_out);
+  (e1 * rcp).store(u_out);
+  (e2 * rcp).store(v_out);
+  return mask;
+}
+
+}  // namespace raylab

@@ -1,0 +1,116 @@
+#pragma once
+// The leaf test and the box test of the wide BVH (internal to src/accel), shared by the
+// single-ray and the packet traversals so that both compute exactly the same numbers.
+
+#include <bit>
+#include <cstdint>
+
+#include "raylab/accel/wide_bvh.h"
+#include "raylab/simd/wide_float.h"
+#include "traversal_common.h"
+
+namespace raylab {
+
+/// Tests the blocks [first, first + count) of a leaf (`count_flags` as stored in the node) against
+/// `ray` restricted to [tmin, tmax); on a hit shrinks `tmax` and updates `best`. Lanes are taken
+/// in order with the exact `t < tie_limit` rule, so the result is the same as testing the
+/// references one by one (the closest hit, lower id on ties). With kAnyHit, returns at the first
+/// hit. Counts the primitives tested in `prim_tests` when kCount.
+template <bool kAnyHit, bool kCount, int W>
+inline bool intersect_wide_leaf(const WideBvhLeaves& leaves, const Geometry& geometry, std::uint32_t first,
+                                std::uint32_t count_flags, const WatertightRay& tri_ray, const Ray& ray, float tmin,
+                                float& tmax, Hit& best, std::uint64_t& prim_tests) {
+  const std::uint32_t count = count_flags & ~WideBvhNode<W>::kLeafHasOthers;
+  const bool others = (count_flags & WideBvhNode<W>::kLeafHasOthers) != 0;
+  const std::uint32_t triangle_count = leaves.triangle_count;
+  bool found = false;
+  for (std::uint32_t b = first; b < first + count; ++b) {
+    const TriangleBlock4& block = leaves.blocks[b];
+    if constexpr (kCount) {
+      for (int i = 0; i < 4; ++i) prim_tests += block.id[i] != TriangleBlock4::kNoPrimitive ? 1 : 0;
+    }
+    alignas(16) float t[4], u[4], v[4];
+    int mask = intersect_triangle_block(block, tri_ray, tmin, tmax, t, u, v);
+    while (mask != 0) {
+      const int i = std::countr_zero(static_cast<unsigned>(mask));
+      mask &= mask - 1;
+      const std::uint32_t id = block.id[i];
+      if (id >= triangle_count) continue;  // a lane of another kind: its vertices are not real
+      if (t[i] < best.tie_limit(id, tmax)) {
+        tmax = t[i];
+        best = {t[i], id, u[i], v[i]};
+        found = true;
+        if constexpr (kAnyHit) return true;
+      }
+    }
+    if (!others) continue;
+    for (int i = 0; i < 4; ++i) {
+      const std::uint32_t id = block.id[i];
+      if (id < triangle_count || id == TriangleBlock4::kNoPrimitive) continue;
+      Ray probe = ray;
+      probe.tmin = tmin;
+      probe.tmax = tmax;
+      if constexpr (kAnyHit) {
+        // Any hit will do: a group (a whole sub-structure) may stop at its first one.
+        if (geometry.occluded(id, tri_ray, probe)) return true;
+        continue;
+      }
+      if (geometry.intersect(id, tri_ray, probe, best)) {
+        tmax = probe.tmax;
+        found = true;
+      }
+    }
+  }
+  return found;
+}
+
+/// The per-ray constants of the W-wide box test, for a ray in octant kOctant.
+template <int W>
+struct WideBoxRay {
+  using F = simd::WideFloat<W>;
+  F ox, oy, oz, ix, iy, iz;
+
+  /// Unset constants, to be assigned before use (packets keep an array of them).
+  WideBoxRay() = default;
+  /// The constants of `ray`.
+  explicit WideBoxRay(const Ray& ray)
+      : ox(F::broadcast(ray.origin.x)),
+        oy(F::broadcast(ray.origin.y)),
+        oz(F::broadcast(ray.origin.z)),
+        // Exact reciprocals (infinite for zero components); NaN slabs that result for a ray in
+        // a face plane are dropped by min/max taking the running value as second operand.
+        ix(F::broadcast(1.f / ray.direction.x)),
+        iy(F::broadcast(1.f / ray.direction.y)),
+        iz(F::broadcast(1.f / ray.direction.z)) {}
+
+  /// Bit mask of the children of `node` that the ray enters within [tmin, tmax] (the exit
+  /// widened by kSlabWiden), and their entry distances in `t_enter`.
+  template <int kOctant>
+  unsigned test(const WideBvhNode<W>& node, float tmin, float tmax, float* t_enter) const {
+    // Near plane per axis: `hi` where the direction is negative. Chosen at compile time.
+    constexpr int kNearX = (kOctant & 1) ? 1 : 0, kNearY = (kOctant & 2) ? 1 : 0, kNearZ = (kOctant & 4) ? 1 : 0;
+    const F tx0 = (F::load(kNearX ? node.hi[0] : node.lo[0]) - ox) * ix;
+    const F tx1 = (F::load(kNearX ? node.lo[0] : node.hi[0]) - ox) * ix;
+    const F ty0 = (F::load(kNearY ? node.hi[1] : node.lo[1]) - oy) * iy;
+    const F ty1 = (F::load(kNearY ? node.lo[1] : node.hi[1]) - oy) * iy;
+    const F tz0 = (F::load(kNearZ ? node.hi[2] : node.lo[2]) - oz) * iz;
+    const F tz1 = (F::load(kNearZ ? node.lo[2] : node.hi[2]) - oz) * iz;
+    const F t_near = max(tz0, max(ty0, max(tx0, F::broadcast(tmin))));
+    // Widened after the closest-hit limit too: a primitive in a box face can be hit at a
+    // distance that rounds just below the box's computed entry and the current closest hit.
+    const F t_far =
+        min(min(tz1, min(ty1, min(tx1, F::broadcast(INFINITY)))), F::broadcast(tmax)) * F::broadcast(kSlabWiden);
+    t_near.store(t_enter);
+    return static_cast<unsigned>(less_equal_mask(t_near, t_far));
+  }
+};
+
+/// A subtree or leaf waiting to be visited: the node's `child` and `count` fields of its slot,
+/// and the distance at which the ray enters it.
+struct WideStackEntry {
+  std::uint32_t child;
+  std::uint32_t count;  ///< 0 for an interior node
+  float t;
+};
+
+}  // namespace raylab
