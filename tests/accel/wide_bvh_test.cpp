@@ -1,0 +1,898 @@
+// The wide BVH at every width (4, 8, 16). Its structure: collapse_to_wide keeps every leaf and
+// every box of the binary tree, each wide node takes binary nodes 1 to W - 1 levels below the
+// one it came from, empty slots are +-inf boxes no ray enters, leaves are packed four references
+// to a block with unused lanes marked, every primitive is referenced exactly once, the "others"
+// flag is set exactly when a leaf holds a non-triangle, and info() describes what it holds. Its
+// answers: bit for bit those of the binary Bvh and of BruteForce (t, prim_id, u, v, ray.tmax),
+// any-hit equal to brute force, counted equal to uncounted, packets of 1 to 40 rays equal to
+// single rays; empty, single and coincident geometry; rays with NaN, infinite or zero
+// components neither crash nor hit.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "raylab/accel/brute_force.h"
+#include "raylab/accel/bvh.h"
+#include "raylab/accel/wide_bvh.h"
+#include "raylab/simd/wide_float.h"
+#include "test_scenes.h"
+
+namespace raylab {
+namespace {
+
+using namespace test_scenes;
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr std::uint32_t kPlusInfBits = 0x7f800000u, kMinusInfBits = 0xff800000u;
+constexpr std::uint32_t kNone = TriangleBlock4::kNoPrimitive;
+
+std::uint32_t bits(float x) { return std::bit_cast<std::uint32_t>(x); }
+
+// ---------------------------------------------------------------------------------------------
+// Structure
+
+enum class Slot { kEmpty, kLeaf, kInterior };
+
+// A leaf has a block count; an interior child has count 0, a real box and a child index other
+// than 0 (node 0 is the root, nobody's child); anything else is an empty slot.
+template <int W>
+Slot slot_kind(const WideBvhNode<W>& n, int i) {
+  if (n.count[i] != 0) return Slot::kLeaf;
+  const bool real_box = n.lo[0][i] <= n.hi[0][i] && n.lo[1][i] <= n.hi[1][i] && n.lo[2][i] <= n.hi[2][i];
+  return real_box && n.child[i] != 0 ? Slot::kInterior : Slot::kEmpty;
+}
+
+template <int W>
+bool is_empty_sentinel(const WideBvhNode<W>& n, int i) {
+  for (int a = 0; a < 3; ++a) {
+    if (bits(n.lo[a][i]) != kPlusInfBits || bits(n.hi[a][i]) != kMinusInfBits) return false;
+  }
+  return n.count[i] == 0;
+}
+
+template <int W>
+bool same_box_bits(const WideBvhNode<W>& n, int i, const BvhNode& b) {
+  for (int a = 0; a < 3; ++a) {
+    if (bits(n.lo[a][i]) != bits(b.lo[a]) || bits(n.hi[a][i]) != bits(b.hi[a])) return false;
+  }
+  return true;
+}
+
+template <int W>
+bool box_contains(const WideBvhNode<W>& n, int i, const Box3& box) {
+  for (int a = 0; a < 3; ++a) {
+    if (!(n.lo[a][i] <= box.lo[a] && box.hi[a] <= n.hi[a][i])) return false;
+  }
+  return true;
+}
+
+// The ids of a leaf slot's blocks, in block and lane order, and whether they are well formed:
+// used lanes first, only the last block partly filled, unused lanes kNoPrimitive with all
+// vertices zero, triangle lanes holding the triangle bit for bit, other lanes degenerate.
+template <int W>
+std::vector<std::uint32_t> leaf_ids(const Geometry& g, const WideBvhTree<W>& wide, const WideBvhNode<W>& n, int i,
+                                    std::vector<int>& block_owner, int owner) {
+  std::vector<std::uint32_t> ids;
+  const std::uint32_t count = n.count[i] & ~WideBvhNode<W>::kLeafHasOthers;
+  const std::uint32_t first = n.child[i];
+  EXPECT_GE(count, 1u);
+  EXPECT_LE(std::uint64_t(first) + count, wide.leaves.blocks.size()) << "leaf blocks out of range";
+  if (std::uint64_t(first) + count > wide.leaves.blocks.size()) return ids;
+  const auto triangle_count = static_cast<std::uint32_t>(g.triangles.size());
+  EXPECT_EQ(wide.leaves.triangle_count, triangle_count);
+  bool others = false;
+  for (std::uint32_t b = first; b < first + count; ++b) {
+    EXPECT_EQ(block_owner[b], -1) << "block " << b << " belongs to two leaves";
+    block_owner[b] = owner;
+    const TriangleBlock4& block = wide.leaves.blocks[b];
+    bool seen_unused = false;
+    for (int lane = 0; lane < 4; ++lane) {
+      const std::uint32_t id = block.id[lane];
+      if (id == kNone) {
+        seen_unused = true;
+        EXPECT_EQ(b, first + count - 1) << "a block other than a leaf's last is not full";
+        for (int k = 0; k < 3; ++k)
+          for (int a = 0; a < 3; ++a) EXPECT_EQ(bits(block.p[k][a][lane]), 0u) << "unused lane with vertices";
+        continue;
+      }
+      EXPECT_FALSE(seen_unused) << "block " << b << ": a used lane after an unused one";
+      EXPECT_LT(id, g.size());
+      ids.push_back(id);
+      if (id < triangle_count) {
+        const Triangle t = block.triangle(lane);
+        EXPECT_EQ(std::memcmp(&t, &g.triangles[id], sizeof(Triangle)), 0) << "block " << b << " lane " << lane;
+      } else {
+        others = true;
+        // Not a triangle: the lane's vertices must be degenerate so that the SIMD test ignores it.
+        const Triangle t = block.triangle(lane);
+        EXPECT_TRUE(t.p0 == t.p1 && t.p1 == t.p2) << "block " << b << " lane " << lane;
+      }
+    }
+  }
+  EXPECT_EQ(count, (ids.size() + 3) / 4) << "a leaf with a wasted block";
+  EXPECT_EQ((n.count[i] & WideBvhNode<W>::kLeafHasOthers) != 0, others)
+      << "kLeafHasOthers must be set exactly when the leaf holds non-triangles";
+  return ids;
+}
+
+// A subtree as (its first binary leaf, number of binary leaves); binary leaves are numbered in
+// index order, so two different binary subtrees never share a key.
+using Key = std::pair<std::uint32_t, std::uint32_t>;
+Key combine(Key a, Key b) { return {std::min(a.first, b.first), a.second + b.second}; }
+
+// Every structural promise of collapse_to_wide<W>(tree, g), with `wide` its result, and of the
+// traversal's depth and info.
+// With spatial splits a triangle may sit in several leaves, clipped: then only the promises that
+// survive clipping are checked (each reference once per leaf, at least once overall), not the box
+// of the whole primitive nor the leaf-by-leaf correspondence.
+template <int W>
+void check_collapse(const Geometry& g, const BvhTree& tree, const WideBvhTree<W>& wide, bool spatial = false) {
+  ASSERT_FALSE(wide.nodes.empty());
+  const auto wn = static_cast<std::uint32_t>(wide.nodes.size());
+  if (tree.prim_ids.empty()) {  // empty geometry: one node, nothing in it
+    ASSERT_EQ(wn, 1u);
+    for (int i = 0; i < W; ++i) EXPECT_TRUE(is_empty_sentinel(wide.nodes[0], i)) << "slot " << i;
+    EXPECT_TRUE(wide.leaves.blocks.empty());
+    EXPECT_EQ(wide.leaf_count, 0u);
+    return;
+  }
+
+  // The binary tree: leaf numbers, keys and parents (children come after their parent).
+  const auto bn = static_cast<std::uint32_t>(tree.nodes.size());
+  std::vector<Key> bkey(bn);
+  std::vector<std::uint32_t> bparent(bn, bn), leaf_number(bn, bn);
+  std::map<Key, std::uint32_t> binary_of;
+  std::map<std::uint32_t, std::uint32_t> leaf_of_first_id;  // first reference's id -> binary leaf
+  std::uint32_t leaves = 0;
+  for (std::uint32_t i = 0; i < bn; ++i) {
+    if (tree.nodes[i].is_leaf()) {
+      leaf_number[i] = leaves++;
+      leaf_of_first_id[tree.prim_ids[tree.nodes[i].first]] = i;
+    }
+  }
+  for (std::uint32_t i = bn; i-- > 0;) {
+    const BvhNode& b = tree.nodes[i];
+    if (b.is_leaf()) {
+      bkey[i] = {leaf_number[i], 1};
+    } else {
+      ASSERT_GT(b.first, i);
+      ASSERT_LT(b.first + 1, bn);
+      bkey[i] = combine(bkey[b.first], bkey[b.first + 1]);
+      bparent[b.first] = bparent[b.first + 1] = i;
+    }
+    binary_of.emplace(bkey[i], i);
+  }
+
+  // Wide slots: kinds, sentinels, indices, each node reached once, leaves well formed.
+  std::vector<int> reached(wn, 0), block_owner(wide.leaves.blocks.size(), -1);
+  std::vector<int> ref_count(g.size(), 0);
+  std::vector<std::vector<std::uint32_t>> slot_ids(std::size_t(wn) * W);
+  std::size_t leaf_slots = 0;
+  for (std::uint32_t w = 0; w < wn && !::testing::Test::HasFailure(); ++w) {  // report the first bad node
+    const WideBvhNode<W>& n = wide.nodes[w];
+    int used = 0, interior = 0;
+    for (int i = 0; i < W; ++i) {
+      switch (slot_kind(n, i)) {
+        case Slot::kEmpty:
+          EXPECT_TRUE(is_empty_sentinel(n, i)) << "node " << w << " slot " << i << ": empty slot without +-inf box";
+          break;
+        case Slot::kLeaf: {
+          ++used, ++leaf_slots;
+          slot_ids[std::size_t(w) * W + std::size_t(i)] = leaf_ids(g, wide, n, i, block_owner, int(w * W + i));
+          std::vector<std::uint32_t> sorted = slot_ids[std::size_t(w) * W + std::size_t(i)];
+          std::sort(sorted.begin(), sorted.end());
+          EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << "a leaf lists a primitive twice";
+          for (std::uint32_t id : sorted) {
+            ++ref_count[id];
+            if (!spatial) {
+              EXPECT_TRUE(box_contains(n, i, g.bounds(id))) << "node " << w << " slot " << i << " misses prim " << id;
+            }
+          }
+          break;
+        }
+        case Slot::kInterior:
+          ++used, ++interior;
+          ASSERT_LT(n.child[i], wn) << "node " << w << " slot " << i;
+          ASSERT_GT(n.child[i], w) << "children are laid out after their parent";
+          ++reached[n.child[i]];
+          break;
+      }
+    }
+    if (wn > 1 || !tree.nodes[0].is_leaf()) {
+      EXPECT_GE(used, 2) << "node " << w << " (only a root holding a single leaf may have fewer)";
+    }
+    // The collapse opens interior children until there are W slots, so a node with fewer has
+    // nothing left to open.
+    if (used < W) {
+      EXPECT_EQ(interior, 0) << "node " << w << " has " << used << " slots but could open one";
+    }
+  }
+  if (::testing::Test::HasFailure()) return;
+  EXPECT_EQ(reached[0], 0) << "the root is nobody's child";
+  for (std::uint32_t w = 1; w < wn; ++w) EXPECT_EQ(reached[w], 1) << "node " << w << " reached that often";
+  EXPECT_EQ(leaf_slots, tree.leaf_count);
+  EXPECT_EQ(wide.leaf_count, tree.leaf_count);
+  for (std::size_t b = 0; b < block_owner.size(); ++b) EXPECT_NE(block_owner[b], -1) << "block " << b << " unused";
+  // Without spatial splits, every primitive built over is referenced exactly once.
+  std::vector<int> expected_refs(g.size(), 0);
+  for (std::uint32_t id : tree.prim_ids) ++expected_refs[id];
+  for (std::uint32_t id = 0; id < g.size(); ++id) {
+    EXPECT_EQ(ref_count[id], expected_refs[id]) << "primitive " << id;
+    if (!spatial) {
+      EXPECT_LE(ref_count[id], 1) << "primitive " << id;
+    } else {
+      EXPECT_GE(ref_count[id], 1) << "primitive " << id;
+    }
+  }
+  if (::testing::Test::HasFailure() || spatial) return;
+
+  // Keys and depths of the wide nodes; every child box inside its slot's box.
+  std::vector<Key> wkey(wn, Key{std::numeric_limits<std::uint32_t>::max(), 0});
+  std::vector<int> wdepth(wn, 0);
+  int deepest_leaf_node = 0;
+  for (std::uint32_t w = 0; w < wn; ++w) {
+    for (int i = 0; i < W; ++i) {
+      if (slot_kind(wide.nodes[w], i) == Slot::kInterior) wdepth[wide.nodes[w].child[i]] = wdepth[w] + 1;
+      if (slot_kind(wide.nodes[w], i) == Slot::kLeaf) deepest_leaf_node = std::max(deepest_leaf_node, wdepth[w]);
+    }
+  }
+  EXPECT_EQ(wide.max_depth, deepest_leaf_node) << "max_depth: the deepest node holding a leaf, root = 0";
+  std::vector<Key> leaf_key(std::size_t(wn) * W);
+  for (std::uint32_t w = wn; w-- > 0;) {
+    const WideBvhNode<W>& n = wide.nodes[w];
+    for (int i = 0; i < W; ++i) {
+      const Slot k = slot_kind(n, i);
+      if (k == Slot::kLeaf) {
+        const auto& ids = slot_ids[std::size_t(w) * W + std::size_t(i)];
+        ASSERT_FALSE(ids.empty());
+        const auto it = leaf_of_first_id.find(ids[0]);
+        ASSERT_NE(it, leaf_of_first_id.end()) << "node " << w << " slot " << i << " starts no binary leaf";
+        const BvhNode& b = tree.nodes[it->second];
+        const std::vector<std::uint32_t> expected(tree.prim_ids.begin() + b.first,
+                                                  tree.prim_ids.begin() + b.first + b.count);
+        EXPECT_EQ(ids, expected) << "node " << w << " slot " << i << ": not the binary leaf's references in order";
+        leaf_key[std::size_t(w) * W + std::size_t(i)] = bkey[it->second];
+        wkey[w] = combine(wkey[w], bkey[it->second]);
+      }
+      if (k == Slot::kInterior) {
+        wkey[w] = combine(wkey[w], wkey[n.child[i]]);
+        const WideBvhNode<W>& c = wide.nodes[n.child[i]];
+        for (int j = 0; j < W; ++j) {
+          if (slot_kind(c, j) == Slot::kEmpty) continue;
+          for (int a = 0; a < 3; ++a) {
+            EXPECT_LE(n.lo[a][i], c.lo[a][j]) << "child box outside its slot, node " << w << " slot " << i;
+            EXPECT_GE(n.hi[a][i], c.hi[a][j]) << "child box outside its slot, node " << w << " slot " << i;
+          }
+        }
+      }
+    }
+  }
+  if (::testing::Test::HasFailure()) return;
+
+  // Each wide node came from a binary interior node (the root from the root, unless the root is
+  // a leaf); each slot is a distinct binary node 1 to W - 1 levels below it with the same box
+  // bit for bit, and together they hold exactly its leaves. Opening the child of largest area can go
+  // down one path, so a slot may be as many as W - 1 levels down.
+  std::vector<std::uint32_t> origin(wn, bn);
+  origin[0] = 0;
+  std::vector<int> as_slot(bn, 0);
+  const bool root_is_leaf = tree.nodes[0].is_leaf();
+  for (std::uint32_t w = 0; w < wn && !::testing::Test::HasFailure(); ++w) {
+    const WideBvhNode<W>& n = wide.nodes[w];
+    ASSERT_LT(origin[w], bn) << "node " << w << " not reached from the root";
+    EXPECT_EQ(wkey[w], bkey[origin[w]]) << "node " << w << " does not hold exactly its binary node's leaves";
+    for (int i = 0; i < W; ++i) {
+      const Slot kind = slot_kind(n, i);
+      if (kind == Slot::kEmpty) continue;
+      const Key key = kind == Slot::kLeaf ? leaf_key[std::size_t(w) * W + std::size_t(i)] : wkey[n.child[i]];
+      const auto it = binary_of.find(key);
+      ASSERT_NE(it, binary_of.end()) << "node " << w << " slot " << i << " matches no binary node";
+      const std::uint32_t b = it->second;
+      EXPECT_EQ(++as_slot[b], 1) << "binary node " << b << " in two slots";
+      EXPECT_TRUE(same_box_bits(n, i, tree.nodes[b])) << "node " << w << " slot " << i << " box differs";
+      EXPECT_EQ(tree.nodes[b].is_leaf(), kind == Slot::kLeaf);
+      if (kind == Slot::kInterior) origin[n.child[i]] = b;
+      if (root_is_leaf) continue;
+      int levels = 0;
+      std::uint32_t up = b;
+      while (up != origin[w] && up != 0) up = bparent[up], ++levels;
+      EXPECT_EQ(up, origin[w]) << "node " << w << " slot " << i << " is not below the node it came from";
+      EXPECT_TRUE(levels >= 1 && levels <= W - 1)
+          << "node " << w << " slot " << i << " is " << levels << " levels down";
+    }
+  }
+  if (::testing::Test::HasFailure()) return;
+  for (std::uint32_t b = 0; b < bn; ++b) {
+    if (tree.nodes[b].is_leaf()) {
+      EXPECT_EQ(as_slot[b], 1) << "binary leaf " << b;
+    }
+  }
+}
+
+// The box test of the traversal (wide_bvh_leaf.h), lane by lane in scalar code with the same
+// operations: bit i is set when the ray enters slot i. A NaN slab distance is dropped (min and max
+// keep the running value, their second operand).
+template <int W>
+unsigned entered_mask(const WideBvhNode<W>& node, const Ray& ray) {
+  constexpr float kSlabWiden = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
+  unsigned mask = 0;
+  for (int i = 0; i < W; ++i) {
+    float t_near = ray.tmin, t_far = kInf;
+    for (int a = 0; a < 3; ++a) {
+      const bool negative = std::signbit(ray.direction[a]);
+      const float inv = 1.f / ray.direction[a];
+      const float t0 = ((negative ? node.hi[a][i] : node.lo[a][i]) - ray.origin[a]) * inv;
+      const float t1 = ((negative ? node.lo[a][i] : node.hi[a][i]) - ray.origin[a]) * inv;
+      t_near = t0 > t_near ? t0 : t_near;
+      t_far = t1 < t_far ? t1 : t_far;
+    }
+    t_far = (t_far < ray.tmax ? t_far : ray.tmax) * kSlabWiden;
+    mask |= (t_near <= t_far ? 1u : 0u) << i;
+  }
+  return mask;
+}
+
+// The scene's random rays plus awkward finite ones: zero, denormal and huge direction components
+// of either sign, origins on the scene box's planes, tmin of -inf, short tmax.
+// For the structure checks, tmin of -inf too; not for comparisons of answers, where it lets the
+// non-triangle shapes report hits at t = -inf from denormal directions, which structures cull
+// (and brute force does not) depending on their boxes.
+std::vector<Ray> awkward_rays(const Geometry& g, Sampler& s, int count, bool negative_tmin = true) {
+  std::vector<Ray> rays = g.size() > 0 ? random_rays(g, s, count) : std::vector<Ray>{};
+  const Box3 box = g.size() > 0 ? g.bounds() : Box3{Vec3(-1.f), Vec3(1.f)};
+  const float comps[] = {0.f, -0.f, 1e-45f, -1e-45f, 1.f, -1.f, 1e30f, -1e30f, 0.3f, -0.7f};
+  for (int i = 0; i < count / 4; ++i) {
+    Ray r;
+    r.origin = s.in_box(box.lo - box.extent(), box.hi + box.extent());
+    const int axis = static_cast<int>(s.rng.next_u32() % 3);
+    r.origin[axis] = s.rng.next_float() < 0.5f ? box.lo[axis] : box.hi[axis];
+    for (int a = 0; a < 3; ++a) r.direction[a] = comps[s.rng.next_u32() % std::size(comps)];
+    if (i % 3 == 0 && negative_tmin) r.tmin = -kInf;
+    if (i % 5 == 0) r.tmax = 1e-3f;
+    rays.push_back(r);
+  }
+  return rays;
+}
+
+// Empty slots are entered by no ray; used ones (a control on entered_mask) by a ray from inside.
+template <int W>
+void check_empty_slots_unreachable(const WideBvhTree<W>& wide, const std::vector<Ray>& rays) {
+  int failures = 0;
+  for (std::size_t w = 0; w < wide.nodes.size(); ++w) {
+    const WideBvhNode<W>& n = wide.nodes[w];
+    unsigned empty = 0;
+    for (int i = 0; i < W; ++i) {
+      if (slot_kind(n, i) == Slot::kEmpty) {
+        empty |= 1u << i;
+        continue;
+      }
+      Ray inside;
+      inside.origin = {0.5f * (n.lo[0][i] + n.hi[0][i]), 0.5f * (n.lo[1][i] + n.hi[1][i]),
+                       0.5f * (n.lo[2][i] + n.hi[2][i])};
+      inside.direction = {0.3f, -0.5f, 0.8f};
+      EXPECT_TRUE(entered_mask(n, inside) & (1u << i)) << "a ray from inside misses node " << w << " slot " << i;
+    }
+    if (empty == 0) continue;
+    for (const Ray& r : rays) {
+      if ((entered_mask(n, r) & empty) != 0 && ++failures <= 5) {
+        ADD_FAILURE() << "a ray enters an empty slot of node " << w << ": o=(" << r.origin.x << ", " << r.origin.y
+                      << ", " << r.origin.z << ") d=(" << r.direction.x << ", " << r.direction.y << ", "
+                      << r.direction.z << ")";
+      }
+    }
+  }
+  EXPECT_EQ(failures, 0);
+}
+
+// The accelerator holds exactly collapse_to_wide(build_bvh(g, config)) and reports it; its
+// traversal visits each node at most once and tests each reference at most once.
+template <int W>
+void check_accelerator(const Geometry& g, const BvhConfig& config, const BvhTree& tree, const WideBvhTree<W>& wide,
+                       const std::vector<Ray>& rays) {
+  const WideBvh<W> accel(g, config);
+  const WideBvhTree<W>& held = accel.tree();
+  ASSERT_EQ(held.nodes.size(), wide.nodes.size());
+  ASSERT_EQ(held.leaves.blocks.size(), wide.leaves.blocks.size());
+  EXPECT_EQ(std::memcmp(held.nodes.data(), wide.nodes.data(), wide.nodes.size() * sizeof(WideBvhNode<W>)), 0);
+  EXPECT_EQ(std::memcmp(held.leaves.blocks.data(), wide.leaves.blocks.data(),
+                        wide.leaves.blocks.size() * sizeof(TriangleBlock4)),
+            0);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(held.nodes.data()) % 64, 0u) << "nodes not cache-line aligned";
+  const AccelInfo info = accel.info();
+  EXPECT_EQ(info.name, W == simd::kNativeBoxWidth ? std::string("bvh") : "bvh" + std::to_string(W));
+  EXPECT_EQ(info.node_count, wide.nodes.size());
+  EXPECT_EQ(info.leaf_count, tree.leaf_count);
+  EXPECT_EQ(info.primitive_count, tree.prim_ids.size());
+  EXPECT_EQ(info.memory_bytes, info.node_count * W * 32 + wide.leaves.blocks.size() * 160);
+  EXPECT_EQ(info.max_depth, wide.max_depth);
+  EXPECT_GE(info.build_seconds, 0.0);
+  if (!tree.prim_ids.empty()) {
+    const Box3 b = accel.bounds();
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_EQ(b.lo[a], tree.nodes[0].lo[a]);
+      EXPECT_EQ(b.hi[a], tree.nodes[0].hi[a]);
+    }
+  }
+  int failures = 0;
+  for (const Ray& ray : rays) {
+    Ray r = ray;
+    Hit h;
+    TraversalStats si, so;
+    accel.intersect_counted(r, h, si);
+    accel.occluded_counted(ray, so);
+    if ((si.nodes_visited > wide.nodes.size() || so.nodes_visited > wide.nodes.size() ||
+         si.prim_tests > tree.prim_ids.size() || so.prim_tests > tree.prim_ids.size()) &&
+        ++failures <= 5) {
+      ADD_FAILURE() << "visited " << si.nodes_visited << " / " << so.nodes_visited << " of " << wide.nodes.size()
+                    << " nodes, " << si.prim_tests << " / " << so.prim_tests << " tests";
+    }
+  }
+  EXPECT_EQ(failures, 0);
+}
+
+template <int W>
+void check_all(const Geometry& g, const BvhConfig& config, std::uint64_t seed, int ray_count) {
+  const BvhTree tree = build_bvh(g, config);
+  const WideBvhTree<W> wide = collapse_to_wide<W>(tree, g);
+  check_collapse<W>(g, tree, wide, config.spatial_splits);
+  Sampler s(seed);
+  const std::vector<Ray> rays = awkward_rays(g, s, ray_count);
+  check_empty_slots_unreachable<W>(wide, rays);
+  // A broken tree can send the traversal round in circles: only a sound one is traversed.
+  if (::testing::Test::HasFailure()) return;
+  check_accelerator<W>(g, config, tree, wide, rays);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Answers
+
+bool same_bits(const Hit& a, const Hit& b) {
+  return bits(a.t) == bits(b.t) && a.prim_id == b.prim_id && bits(a.u) == bits(b.u) && bits(a.v) == bits(b.v);
+}
+bool same_bits(const Ray& a, const Ray& b) { return std::memcmp(&a, &b, sizeof(Ray)) == 0; }
+
+std::string describe(const Ray& r) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "o=(%a, %a, %a) d=(%a, %a, %a) tmin=%a tmax=%a", r.origin.x, r.origin.y, r.origin.z,
+                r.direction.x, r.direction.y, r.direction.z, r.tmin, r.tmax);
+  return buf;
+}
+std::string describe(const Hit& h) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "t=%a prim=%u u=%a v=%a", h.t, h.prim_id, h.u, h.v);
+  return buf;
+}
+
+// Every query of `wide` answers bit for bit as `reference` does: closest hit (t, prim_id, u, v
+// and the shrunk tmax, or nothing changed on a miss), counted closest hit, any-hit with the ray's
+// own tmax and with a tmax around the closest hit, counted any-hit.
+void compare_bitwise(const Accelerator& wide, const Accelerator& reference, const std::vector<Ray>& rays,
+                     const char* what, Sampler& s, int* hits_out = nullptr) {
+  int failures = 0, hits = 0;
+  auto fail = [&](const std::string& msg, const Ray& r) {
+    if (++failures <= 5) ADD_FAILURE() << what << ": " << msg << " for ray " << describe(r);
+  };
+  for (const Ray& ray : rays) {
+    Ray rr = ray, rw = ray, rc = ray;
+    Hit hr, hw, hc;
+    const bool fr = reference.intersect(rr, hr);
+    const bool fw = wide.intersect(rw, hw);
+    if (fr != fw || !same_bits(hr, hw) || !same_bits(rr, rw)) {
+      fail("closest hit " + describe(hw) + (fw ? "" : " (miss)") + " vs " + describe(hr) + (fr ? "" : " (miss)"), ray);
+    }
+    hits += fr ? 1 : 0;
+    if (!fw && (!same_bits(rw, ray) || hw.valid())) fail("a miss changed the ray or the hit", ray);
+    TraversalStats st;
+    const bool fc = wide.intersect_counted(rc, hc, st);
+    if (fc != fw || !same_bits(hc, hw) || !same_bits(rc, rw)) fail("intersect_counted differs from intersect", ray);
+    if (st.hits != (fc ? 1u : 0u)) fail("counted hits", ray);
+
+    Ray ro = ray;
+    if (fr && s.rng.next_float() < 0.7f) {
+      const float pick = s.rng.next_float();
+      ro.tmax = pick < 0.2f ? hr.t : (pick < 0.4f ? std::nextafter(hr.t, kInf) : hr.t * s.uni(0.5f, 1.5f));
+    }
+    const bool oref = reference.occluded(ro);
+    if (wide.occluded(ro) != oref) fail(oref ? "occluded missed" : "occluded phantom", ro);
+    TraversalStats so;
+    if (wide.occluded_counted(ro, so) != oref) fail("occluded_counted differs", ro);
+  }
+  EXPECT_EQ(failures, 0) << what << ", of " << rays.size() << " rays";
+  if (hits_out != nullptr) *hits_out = hits;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Packets
+
+// Rays for the packet tests: coherent (one origin through a 4x4 pixel grid), incoherent
+// (random), mixed octants from one point, and some with tmax already small or a carried-over
+// hit. Each ray comes with the Hit it is traced with.
+struct RaySet {
+  std::vector<Ray> rays;
+  std::vector<Hit> hits;
+};
+
+RaySet packet_rays(const Geometry& g, const Accelerator& reference, Sampler& s, int count) {
+  RaySet set;
+  const Box3 box = g.bounds();
+  const Vec3 centre = (box.lo + box.hi) * 0.5f, ext = box.extent();
+  const std::vector<Ray> random = random_rays(g, s, count);
+  for (int i = 0; int(set.rays.size()) < count; ++i) {
+    const int kind = (i / 16) % 4;
+    Ray r;
+    if (kind == 0) {  // a 4x4 tile of a camera outside the box looking at its centre
+      const int tile = i / 64;
+      const Vec3 eye = centre + Vec3{ext.x * 1.5f, ext.y * 0.7f, -ext.z * 1.2f} * (1.f + 0.1f * float(tile % 3));
+      const float px = float(tile % 5) * 4.f + float(i % 4), py = float(tile / 5 % 5) * 4.f + float(i / 4 % 4);
+      r.origin = eye;
+      r.direction = centre - eye + Vec3{ext.x * (px / 20.f - 0.5f), ext.y * (py / 20.f - 0.5f), 0.f};
+    } else if (kind == 1) {  // random
+      r = random[std::size_t(i) % random.size()];
+    } else if (kind == 2) {  // from one point, all eight octants in turn
+      r.origin = centre + ext * 0.1f;
+      const Vec3 d = s.unit();
+      r.direction = {i & 1 ? -std::fabs(d.x) : std::fabs(d.x), i & 2 ? -std::fabs(d.y) : std::fabs(d.y),
+                     i & 4 ? -std::fabs(d.z) : std::fabs(d.z)};
+    } else {  // axis-aligned and zero components within a coherent group
+      r.origin = centre - ext * 0.45f + Vec3{ext.x * 0.05f * float(i % 4), ext.y * 0.05f * float(i / 4 % 4), 0.f};
+      r.direction = i % 3 == 0 ? Vec3{0.f, -0.f, 1.f} : Vec3{0.2f, 0.3f, 1.f};
+    }
+    Hit h;
+    const int twist = static_cast<int>(s.rng.next_u32() % 8);
+    if (twist == 0) {  // tmax already small
+      Ray probe = r;
+      Hit ph;
+      r.tmax = reference.intersect(probe, ph) ? ph.t * 0.5f : 1e-3f;
+    } else if (twist == 1) {  // carried over from an earlier query: tmax at that hit
+      Ray probe = r;
+      if (reference.intersect(probe, h)) r.tmax = probe.tmax;
+    } else if (twist == 2) {
+      r.tmin = s.uni(0.f, 0.5f);
+    }
+    set.rays.push_back(r);
+    set.hits.push_back(h);
+  }
+  return set;
+}
+
+// Packets of every size from 1 to 40, cut from `set` at shifting offsets, answer bit for bit as
+// the single-ray queries of the same structure do.
+void check_packets(const Accelerator& accel, const RaySet& set, const char* what) {
+  int failures = 0;
+  std::size_t start = 0;
+  for (int n = 1; n <= 40; ++n) {
+    if (start + std::size_t(n) > set.rays.size()) start = 0;
+    const std::span<const Ray> group(set.rays.data() + start, std::size_t(n));
+    const std::span<const Hit> group_hits(set.hits.data() + start, std::size_t(n));
+    start += std::size_t(n) * 3 / 2 + 1;
+    std::vector<Ray> rays(group.begin(), group.end()), singles = rays;
+    std::vector<Hit> hits(group_hits.begin(), group_hits.end()), single_hits = hits;
+    accel.intersect(std::span<Ray>(rays), std::span<Hit>(hits));
+    std::vector<std::uint8_t> occ(std::size_t(n), 7);
+    accel.occluded(group, std::span<std::uint8_t>(occ));
+    for (int i = 0; i < n; ++i) {
+      accel.intersect(singles[std::size_t(i)], single_hits[std::size_t(i)]);
+      const bool single_occ = accel.occluded(group[std::size_t(i)]);
+      if ((!same_bits(hits[std::size_t(i)], single_hits[std::size_t(i)]) ||
+           !same_bits(rays[std::size_t(i)], singles[std::size_t(i)])) &&
+          ++failures <= 5) {
+        ADD_FAILURE() << what << ": packet of " << n << ", lane " << i << ": " << describe(hits[std::size_t(i)])
+                      << " vs single " << describe(single_hits[std::size_t(i)]) << " for ray "
+                      << describe(group[std::size_t(i)]);
+      }
+      if (occ[std::size_t(i)] != (single_occ ? 1 : 0) && ++failures <= 5) {
+        ADD_FAILURE() << what << ": packet of " << n << ", lane " << i << ": occluded " << int(occ[std::size_t(i)])
+                      << " vs single " << single_occ << " for ray " << describe(group[std::size_t(i)]);
+      }
+    }
+  }
+  EXPECT_EQ(failures, 0) << what;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Tests, for each width
+
+template <class T>
+class WideBvhTest : public ::testing::Test {};
+template <class T>
+class WideBvhDeathTest : public ::testing::Test {};
+
+template <int W>
+using Width = std::integral_constant<int, W>;
+using Widths = ::testing::Types<Width<4>, Width<8>, Width<16>>;
+class WidthNames {
+ public:
+  template <class T>
+  static std::string GetName(int) {
+    return "W" + std::to_string(T::value);
+  }
+};
+TYPED_TEST_SUITE(WideBvhTest, Widths, WidthNames);
+TYPED_TEST_SUITE(WideBvhDeathTest, Widths, WidthNames);
+
+static_assert(sizeof(WideBvhNode<4>) == 128 && sizeof(WideBvhNode<8>) == 256 && sizeof(WideBvhNode<16>) == 512,
+              "a wide node is 32 bytes per slot");
+static_assert(alignof(WideBvhNode<4>) == 64);
+
+TYPED_TEST(WideBvhTest, StructureOnRandomScenes) {
+  constexpr int W = TypeParam::value;
+  for (const NamedScene& scene : kScenes) {
+    SCOPED_TRACE(scene.name);
+    Sampler s(scene.seed);
+    check_all<W>(scene.make(s), BvhConfig{}, scene.seed + 100, 1200);
+  }
+}
+
+TYPED_TEST(WideBvhTest, StructureUnderOtherBuildConfigs) {
+  constexpr int W = TypeParam::value;
+  for (const BvhConfig config :
+       {BvhConfig{2, 1, 1.f, 1.f, 4096}, BvhConfig{64, 32, 0.5f, 2.f, 4096}, BvhConfig{16, 4, 1.f, 1.f, 64}}) {
+    SCOPED_TRACE("max_leaf_size " + std::to_string(config.max_leaf_size));
+    Sampler s(7);
+    check_all<W>(every_shape_kind(s), config, 107, 600);
+  }
+}
+
+// Spatial splits (clipped triangle references in several leaves) and leaf costs per block: a
+// sound structure and the same bits as brute force.
+TYPED_TEST(WideBvhTest, SpatialSplitsAndBlockCosts) {
+  constexpr int W = TypeParam::value;
+  BvhConfig spatial;
+  spatial.spatial_splits = true;
+  spatial.spatial_split_alpha = 0.f;  // try them everywhere
+  BvhConfig blocks;
+  blocks.leaf_block_size = 4;
+  for (const BvhConfig& config : {spatial, blocks}) {
+    for (const NamedScene& scene : kScenes) {
+      SCOPED_TRACE(std::string(scene.name) + (config.spatial_splits ? ", spatial splits" : ", block costs"));
+      Sampler s(scene.seed + 20);
+      const Geometry g = scene.make(s);
+      check_all<W>(g, config, scene.seed + 120, 200);
+      const WideBvh<W> wide(g, config);
+      const BruteForce brute(g);
+      compare_bitwise(wide, brute, awkward_rays(g, s, 300, false), "vs brute force", s);
+      if (::testing::Test::HasFailure()) return;
+    }
+  }
+}
+
+// The six scenes: the same bits as the binary BVH and as brute force, for every query.
+TYPED_TEST(WideBvhTest, BitIdenticalToBinaryBvhAndBruteForce) {
+  constexpr int W = TypeParam::value;
+  for (const NamedScene& scene : kScenes) {
+    SCOPED_TRACE(scene.name);
+    Sampler s(scene.seed);
+    const Geometry g = scene.make(s);
+    const WideBvh<W> wide(g);
+    const Bvh binary(g);
+    const BruteForce brute(g);
+    const std::vector<Ray> rays = awkward_rays(g, s, 1000, false);
+    int hits = 0;
+    compare_bitwise(wide, brute, rays, "vs brute force", s, &hits);
+    compare_bitwise(wide, binary, rays, "vs binary BVH", s);
+    EXPECT_GT(hits, int(rays.size()) / 10) << "too few hits for a meaningful comparison";
+    if (::testing::Test::HasFailure()) return;
+  }
+}
+
+TYPED_TEST(WideBvhTest, PacketsEqualSingleRays) {
+  constexpr int W = TypeParam::value;
+  for (const NamedScene& scene : kScenes) {
+    SCOPED_TRACE(scene.name);
+    Sampler s(scene.seed + 50);
+    const Geometry g = scene.make(s);
+    const WideBvh<W> wide(g);
+    const RaySet set = packet_rays(g, wide, s, 700);
+    check_packets(wide, set, scene.name);
+    // The packet results also equal brute force (through the single rays), spot-checked.
+    const BruteForce brute(g);
+    std::vector<Ray> rays(set.rays.begin(), set.rays.begin() + 64);
+    std::vector<Hit> hits(set.hits.begin(), set.hits.begin() + 64);
+    wide.intersect(std::span<Ray>(rays), std::span<Hit>(hits));
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      Ray r = set.rays[i];
+      Hit h = set.hits[i];
+      brute.intersect(r, h);
+      EXPECT_TRUE(same_bits(h, hits[i]) && same_bits(r, rays[i])) << "ray " << i << ": " << describe(set.rays[i]);
+    }
+    if (::testing::Test::HasFailure()) return;
+  }
+}
+
+// Small and degenerate inputs, under the default build and one that splits down to single
+// primitives.
+Geometry degenerate(int which) {
+  Geometry g;
+  const Triangle tri{{-1.f, -1.f, 3.f}, {1.f, -1.f, 3.f}, {0.f, 1.f, 3.f}};
+  switch (which) {
+    case 0:
+      break;  // empty
+    case 1:
+      g.add(Sphere{{0.f, 0.f, 5.f}, 1.f}, 0);
+      break;
+    case 2:
+      g.add(tri, 0);
+      break;
+    case 3:
+      g.add(Sphere{{-3.f, 0.f, 5.f}, 1.f}, 0);
+      g.add(tri, 1);
+      break;
+    case 4:
+      g.add(tri, 0);
+      g.add(Sphere{{3.f, 0.f, 4.f}, 1.f}, 1);
+      g.add(Quad{{-4.f, -4.f, 8.f}, {8.f, 0.f, 0.f}, {0.f, 8.f, 0.f}}, 2);
+      g.add(Disk{{0.f, 3.f, 2.f}, {0.f, 0.f, 1.f}, 1.f}, 3);
+      g.add(Cylinder{{-3.f, -3.f, 2.f}, 0.5f, {-3.f, -3.f, 4.f}, 0.5f}, 4);
+      break;
+    case 5:
+      for (int i = 0; i < 40; ++i) g.add(tri, 0);  // all coincident
+      break;
+    default:
+      for (int i = 0; i < 33; ++i) g.add(Quad{{-1.f, -1.f, 6.f}, {2.f, 0.f, 0.f}, {0.f, 2.f, 0.f}}, 0);  // flat too
+      break;
+  }
+  return g;
+}
+
+TYPED_TEST(WideBvhTest, DegenerateGeometry) {
+  constexpr int W = TypeParam::value;
+  const char* names[] = {"empty",
+                         "one sphere",
+                         "one triangle",
+                         "two primitives",
+                         "five primitives",
+                         "40 coincident triangles",
+                         "33 coincident flat quads"};
+  for (int which = 0; which < 7; ++which) {
+    for (const BvhConfig config : {BvhConfig{}, BvhConfig{16, 1, 1.f, 1.f, 4096}, BvhConfig{2, 2, 1.f, 1.f, 4}}) {
+      SCOPED_TRACE(std::string(names[which]) + ", max_leaf_size " + std::to_string(config.max_leaf_size));
+      const Geometry g = degenerate(which);
+      check_all<W>(g, config, 200 + std::uint64_t(which), 400);
+      if (::testing::Test::HasFailure()) return;
+      // Rays from near the origin towards the scene: the same bits as brute force.
+      const WideBvh<W> accel(g, config);
+      const BruteForce brute(g);
+      Sampler s(300 + std::uint64_t(which));
+      std::vector<Ray> rays;
+      for (int i = 0; i < 300; ++i) {
+        const Vec3 o = s.in_box(Vec3(-0.5f), Vec3(0.5f));
+        rays.push_back(Ray{o, 0.f, s.in_box(Vec3(-4.f, -4.f, 1.f), Vec3(4.f, 4.f, 8.f)) - o});
+      }
+      int hits = 0;
+      compare_bitwise(accel, brute, rays, names[which], s, &hits);
+      if (which != 0) {
+        EXPECT_GT(hits, 0);
+      }
+      if (which == 5) {
+        // Coincident triangles tie exactly; the lowest id wins, whatever the leaf order.
+        for (const Ray& ray : rays) {
+          Ray r = ray;
+          Hit h;
+          if (accel.intersect(r, h)) {
+            EXPECT_EQ(h.prim_id, 0u);
+          }
+        }
+      }
+      const AccelInfo info = accel.info();
+      EXPECT_EQ(info.primitive_count, g.size());
+      if (which <= 2) {
+        EXPECT_EQ(info.node_count, 1u);
+        EXPECT_EQ(info.leaf_count, which == 0 ? 0u : 1u);
+        EXPECT_EQ(info.max_depth, 0);
+      }
+      if (which == 0) {
+        EXPECT_EQ(info.memory_bytes, sizeof(WideBvhNode<W>));
+        std::vector<Ray> none(5, Ray{Vec3(0.f), 0.f, {0.f, 0.f, 1.f}});
+        std::vector<Hit> nohits(5);
+        accel.intersect(std::span<Ray>(none), std::span<Hit>(nohits));
+        for (const Hit& h : nohits) EXPECT_FALSE(h.valid());
+        std::vector<std::uint8_t> occ(5, 7);
+        accel.occluded(std::span<const Ray>(none), std::span<std::uint8_t>(occ));
+        for (std::uint8_t o : occ) EXPECT_EQ(o, 0);
+      }
+      check_packets(accel, packet_rays(g.size() > 0 ? g : degenerate(2), accel, s, 200), names[which]);
+    }
+  }
+}
+
+// Rays with NaN, infinite or zero components (in the direction or the origin): every query must
+// return without a hit and without touching the ray or the hit. Run in a child process so that a
+// traversal that goes round in circles or runs off its stack fails this test instead of ending
+// the whole test program.
+std::vector<Ray> non_finite_rays() {
+  const float comps[] = {kNaN, -kNaN, kInf, -kInf, 0.f, -0.f};
+  std::vector<Ray> rays;
+  // Directions built from these components (all-zero ones included), from an ordinary origin.
+  for (float x : comps)
+    for (float y : comps)
+      for (float z : comps) {
+        const Vec3 d{x, y, z};
+        if (std::isfinite(x) && std::isfinite(y) && std::isfinite(z) && (x != 0.f || y != 0.f || z != 0.f)) continue;
+        rays.push_back(Ray{{0.1f, 0.2f, -0.3f}, 0.f, d});
+      }
+  // NaN or infinite origins with ordinary directions.
+  for (float o : {kNaN, kInf, -kInf}) {
+    for (int a = 0; a < 3; ++a) {
+      Ray r{{0.1f, 0.2f, -0.3f}, 0.f, {0.2f, -0.1f, 1.f}};
+      r.origin[a] = o;
+      rays.push_back(r);
+    }
+  }
+  rays.push_back(Ray{Vec3(kNaN), 0.f, Vec3(kNaN)});
+  return rays;
+}
+
+template <int W>
+int non_finite_queries(const Geometry& g) {
+  const WideBvh<W> accel(g);
+  const std::vector<Ray> rays = non_finite_rays();
+  int bad = 0;
+  for (const Ray& ray : rays) {
+    Ray r = ray, rc = ray;
+    Hit h, hc;
+    TraversalStats st;
+    const bool hit = accel.intersect(r, h), hit_c = accel.intersect_counted(rc, hc, st);
+    const bool occ = accel.occluded(ray), occ_c = accel.occluded_counted(ray, st);
+    if (hit || hit_c || occ || occ_c || h.valid() || !same_bits(r, ray)) {
+      std::fprintf(stderr, "hit for ray %s\n", describe(ray).c_str());
+      ++bad;
+    }
+  }
+  // Packets mixing them with ordinary rays: the ordinary ones as single rays, the others missing.
+  Sampler s(77);
+  std::vector<Ray> mixed = random_rays(g, s, int(rays.size()));
+  for (std::size_t i = 0; i < rays.size(); i += 2) mixed[i] = rays[i];
+  for (std::size_t n = 1; n <= mixed.size(); n += 7) {
+    std::vector<Ray> group(mixed.begin(), mixed.begin() + long(n)), singles = group;
+    std::vector<Hit> hits(n), single_hits(n);
+    accel.intersect(std::span<Ray>(group), std::span<Hit>(hits));
+    std::vector<std::uint8_t> occ(n, 7);
+    accel.occluded(std::span<const Ray>(singles), std::span<std::uint8_t>(occ));
+    for (std::size_t i = 0; i < n; ++i) {
+      const bool single_occ = accel.occluded(singles[i]);
+      accel.intersect(singles[i], single_hits[i]);
+      if (!same_bits(hits[i], single_hits[i]) || occ[i] != (single_occ ? 1 : 0)) {
+        std::fprintf(stderr, "packet of %zu, lane %zu differs from the single ray %s\n", n, i,
+                     describe(mixed[i]).c_str());
+        ++bad;
+      }
+    }
+  }
+  return bad;
+}
+
+TYPED_TEST(WideBvhDeathTest, NonFiniteRaysNeitherCrashNorHit) {
+  constexpr int W = TypeParam::value;
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  for (int which = 0; which < 3; ++which) {
+    SCOPED_TRACE(which);
+    Sampler s(90);
+    const Geometry g = which == 0 ? degenerate(4) : (which == 1 ? spheres_and_triangles(s) : closed_meshes(s));
+    EXPECT_EXIT(
+        {
+          alarm(60);  // a traversal that loops for ever fails instead of hanging
+          std::_Exit(non_finite_queries<W>(g) == 0 ? 0 : 1);
+        },
+        ::testing::ExitedWithCode(0), "")
+        << "a query with a NaN, infinite or zero ray crashed, looped or hit";
+  }
+}
+
+}  // namespace
+}  // namespace raylab
