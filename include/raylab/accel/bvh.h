@@ -20,6 +20,17 @@ struct BvhConfig {
   float traversal_cost = 1.0f;     ///< SAH cost of visiting a node, relative to one primitive test
   float intersection_cost = 1.0f;  ///< SAH cost of one primitive test
   int parallel_threshold = 4096;   ///< subtrees with at least this many primitives build in parallel
+  /// A leaf pays `intersection_cost` per started block of this many primitives (wide BVHs test
+  /// leaf triangles 4 or 8 at a time), in the build and in `sah_cost` alike.
+  int leaf_block_size = 1;
+  /// Spatial splits (Stich et al. 2009, SBVH): triangles may be clipped into several leaves,
+  /// so `prim_ids` may list a primitive more than once. Other shapes are only ever object-split.
+  bool spatial_splits = false;
+  /// A spatial split is tried only where the children of the best object split overlap by more
+  /// than this fraction of the root's surface area.
+  float spatial_split_alpha = 1e-5f;
+  /// Spatial splits may add at most this fraction of the primitive count as extra references.
+  float spatial_split_budget = 0.3f;
 };
 
 /// One node, 32 bytes so two siblings share a 64-byte cache line:
@@ -54,7 +65,8 @@ BvhTree build_bvh(const Geometry& geometry, const BvhConfig& config = {});
 BvhTree build_bvh(const Geometry& geometry, std::span<const std::uint32_t> ids, const BvhConfig& config = {});
 
 /// SAH cost of a tree (traversal cost per interior node and intersection cost per primitive,
-/// weighted by surface area relative to the root): used to compare builds.
+/// charged per started block of `leaf_block_size` in a leaf, weighted by surface area relative to
+/// the root): used to compare builds.
 double sah_cost(const BvhTree& tree, const BvhConfig& config = {});
 
 /// Per-ray constants of the box test (origin, reciprocal direction); defined in bvh.cpp.
