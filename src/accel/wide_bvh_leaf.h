@@ -101,7 +101,14 @@ struct WideBoxRay {
     const F t_far =
         min(min(tz1, min(ty1, min(tx1, F::broadcast(INFINITY)))), F::broadcast(tmax)) * F::broadcast(kSlabWiden);
     t_near.store(t_enter);
-    return static_cast<unsigned>(less_equal_mask(t_near, t_far));
+    return static_cast<unsigned>(less_equal_mask(t_near, t_far)) & occupied_slots(node);
+  }
+
+  /// Bit mask of the slots of `node` that hold a child. The slab test alone does not exclude an
+  /// empty slot (+inf to -inf) for every ray: with an infinite direction component every slab
+  /// distance is NaN, which the test drops.
+  static unsigned occupied_slots(const WideBvhNode<W>& node) {
+    return static_cast<unsigned>(less_equal_mask(F::load(node.lo[0]), F::load(node.hi[0])));
   }
 };
 

@@ -19,6 +19,9 @@ namespace {
 /// Rays per packet: 16 is a 4x4 pixel tile.
 constexpr int kPacketSize = 16;
 
+/// Rays tested together by one box-test instruction: 16 with AVX-512, else 8.
+constexpr int kRayLanes = simd::kNativeBoxWidth;
+
 /// Subtrees with at most this many rays left are finished with single-ray walks: below it the
 /// shared node fetches no longer pay for the per-ray bookkeeping.
 constexpr int kSingleRayThreshold = 2;
@@ -36,7 +39,7 @@ struct PacketInterval {
   /// a superset of every ray's own test, because each bound is computed with the same
   /// (monotone) float operations at the extreme ray values.
   template <int kOctant>
-  unsigned test(const WideBvhNode<W>& node, float tmin, float tmax) const {
+  unsigned test(const WideBvhNode<W>& node, float tmin, float tmax, float* t_enter) const {
     constexpr int kNear[3] = {(kOctant & 1) ? 1 : 0, (kOctant & 2) ? 1 : 0, (kOctant & 4) ? 1 : 0};
     F t_near = F::broadcast(tmin);
     F t_far = F::broadcast(INFINITY);
@@ -47,9 +50,60 @@ struct PacketInterval {
       t_far = min(max(d_far * inv_lo[a], d_far * inv_hi[a]), t_far);
     }
     t_far = min(t_far, F::broadcast(tmax)) * F::broadcast(kSlabWiden);
+    t_near.store(t_enter);
     return static_cast<unsigned>(less_equal_mask(t_near, t_far));
   }
 };
+
+/// The interval bounds of the packet's rays, given as origins and reciprocal directions per axis
+/// (all kPacketSize lanes filled: unused lanes repeat a used one); not valid when some origin
+/// or reciprocal is not finite or is zero, or `tmin_lo` is NaN.
+template <int W, int kOctant>
+PacketInterval<W> packet_interval(const float (&origin)[3][kPacketSize], const float (&inv)[3][kPacketSize],
+                                  float tmin_lo) {
+  using F = simd::WideFloat<W>;
+  using L = simd::WideFloat<kRayLanes>;
+  PacketInterval<W> interval;
+  const L zero = L::broadcast(0.f);
+  constexpr unsigned kAll = (1u << kRayLanes) - 1u;
+  bool ok = tmin_lo == tmin_lo;
+  float bound[4][3];  // origin min, origin max, reciprocal min, reciprocal max per axis
+  for (int a = 0; a < 3; ++a) {
+    L o_lo = L::load(origin[a]), o_hi = o_lo, i_lo = L::load(inv[a]), i_hi = i_lo;
+    for (int g = 0; g < kPacketSize / kRayLanes; ++g) {
+      const L o = L::load(origin[a] + g * kRayLanes), r = L::load(inv[a] + g * kRayLanes);
+      // x - x is 0 exactly when x is finite (NaN for infinities and NaN).
+      const L o_nan = o - o, r_nan = r - r;
+      ok = ok && (less_equal_mask(o_nan, zero) & less_equal_mask(r_nan, zero)) == kAll &&
+           (less_equal_mask(r, zero) & less_equal_mask(zero, r)) == 0;
+      o_lo = min(o, o_lo);
+      o_hi = max(o, o_hi);
+      i_lo = min(r, i_lo);
+      i_hi = max(r, i_hi);
+    }
+    alignas(64) float lanes[4][kRayLanes];
+    o_lo.store(lanes[0]);
+    o_hi.store(lanes[1]);
+    i_lo.store(lanes[2]);
+    i_hi.store(lanes[3]);
+    for (int k = 0; k < 4; ++k) {
+      bound[k][a] = lanes[k][0];
+      for (int i = 1; i < kRayLanes; ++i) {
+        bound[k][a] = (k % 2 == 0) ? std::min(bound[k][a], lanes[k][i]) : std::max(bound[k][a], lanes[k][i]);
+      }
+    }
+  }
+  interval.valid = ok;
+  for (int a = 0; a < 3 && ok; ++a) {
+    const bool negative = (kOctant >> a) & 1;
+    // Near plane minus origin is smallest at the origin farthest along the direction.
+    interval.near_o[a] = F::broadcast(negative ? bound[0][a] : bound[1][a]);
+    interval.far_o[a] = F::broadcast(negative ? bound[1][a] : bound[0][a]);
+    interval.inv_lo[a] = F::broadcast(bound[2][a]);
+    interval.inv_hi[a] = F::broadcast(bound[3][a]);
+  }
+  return interval;
+}
 
 /// A subtree waiting to be visited by the rays in `rays` (bit i: lane i), entered by the
 /// nearest of them at `t`.
@@ -63,50 +117,57 @@ struct PacketStackEntry {
 template <int W>
 template <bool kAnyHit, int kOctant>
 void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occluded_out, int n) const {
-  // Per-lane state: the box and triangle constants, the running closest distance and hit.
-  WideBoxRay<W> box_rays[kPacketSize];
+  using L = simd::WideFloat<kRayLanes>;
+  constexpr int kNear[3] = {(kOctant & 1) ? 1 : 0, (kOctant & 2) ? 1 : 0, (kOctant & 4) ? 1 : 0};
+  // Per-lane state, as structure of arrays for the box tests across rays (unused lanes copy
+  // ray 0 and stay inactive), and per ray for the leaf tests.
+  alignas(64) float origin[3][kPacketSize], inv[3][kPacketSize], tmin[kPacketSize], tmax[kPacketSize];
   WatertightRay tri_rays[kPacketSize];
-  float tmax[kPacketSize];
   Hit best[kPacketSize];
   float tmin_lo = INFINITY;
   std::uint32_t found = 0, alive = 0;
-  for (int i = 0; i < n; ++i) {
-    box_rays[i] = WideBoxRay<W>(rays[i]);
-    tri_rays[i] = WatertightRay(rays[i]);
-    tmax[i] = rays[i].tmax;
+  // The single-ray constants are prepared on first use: many packets miss everything.
+  std::uint32_t has_tri_ray = 0;
+  auto tri_ray = [&](int i) -> const WatertightRay& {
+    if (!((has_tri_ray >> i) & 1u)) {
+      tri_rays[i] = WatertightRay(rays[i]);
+      has_tri_ray |= 1u << i;
+    }
+    return tri_rays[i];
+  };
+  for (int i = 0; i < kPacketSize; ++i) {
+    const Ray& r = rays[i < n ? i : 0];
+    for (int a = 0; a < 3; ++a) {
+      origin[a][i] = r.origin[a];
+      inv[a][i] = 1.f / r.direction[a];  // exactly as the single-ray box test computes it
+    }
+    tmin[i] = r.tmin;
+    tmax[i] = r.tmax;
+    if (i >= n) continue;
     best[i] = kAnyHit ? Hit{} : hits[i];
-    tmin_lo = std::min(tmin_lo, rays[i].tmin);
+    tmin_lo = std::min(tmin_lo, r.tmin);
     // A ray with an empty or NaN interval takes no part (the single-ray walk would find nothing).
-    if (rays[i].tmin <= rays[i].tmax) alive |= 1u << i;
+    if (r.tmin <= r.tmax) alive |= 1u << i;
   }
+  const PacketInterval<W> interval = packet_interval<W, kOctant>(origin, inv, tmin_lo);
 
-  // The packet's interval bounds, when every ray allows them.
-  PacketInterval<W> interval;
-  {
-    bool ok = !(tmin_lo != tmin_lo);
-    float o_lo[3] = {INFINITY, INFINITY, INFINITY}, o_hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    float i_lo[3] = {INFINITY, INFINITY, INFINITY}, i_hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (int i = 0; i < n && ok; ++i) {
-      for (int a = 0; a < 3; ++a) {
-        const float o = rays[i].origin[a], inv = 1.f / rays[i].direction[a];
-        ok = ok && std::isfinite(o) && std::isfinite(inv) && inv != 0.f;
-        o_lo[a] = std::min(o_lo[a], o);
-        o_hi[a] = std::max(o_hi[a], o);
-        i_lo[a] = std::min(i_lo[a], inv);
-        i_hi[a] = std::max(i_hi[a], inv);
-      }
+  // Bit mask of the lanes of group g that enter child c of `node` within their own
+  // [tmin, tmax]: the single-ray box test, lane by lane, with the same operations.
+  auto lanes_entering = [&](const WideBvhNode<W>& node, int c, int g, float* t_enter) {
+    const int o = g * kRayLanes;
+    L t_near = L::load(tmin + o);
+    L t_far = L::broadcast(INFINITY);
+    for (int a = 0; a < 3; ++a) {
+      const L o_a = L::load(origin[a] + o), i_a = L::load(inv[a] + o);
+      const L t0 = (L::broadcast(kNear[a] ? node.hi[a][c] : node.lo[a][c]) - o_a) * i_a;
+      const L t1 = (L::broadcast(kNear[a] ? node.lo[a][c] : node.hi[a][c]) - o_a) * i_a;
+      t_near = max(t0, t_near);
+      t_far = min(t1, t_far);
     }
-    interval.valid = ok;
-    using F = simd::WideFloat<W>;
-    for (int a = 0; a < 3 && ok; ++a) {
-      const bool negative = (kOctant >> a) & 1;
-      // Near plane minus origin is smallest at the origin farthest along the direction.
-      interval.near_o[a] = F::broadcast(negative ? o_lo[a] : o_hi[a]);
-      interval.far_o[a] = F::broadcast(negative ? o_hi[a] : o_lo[a]);
-      interval.inv_lo[a] = F::broadcast(i_lo[a]);
-      interval.inv_hi[a] = F::broadcast(i_hi[a]);
-    }
-  }
+    t_far = min(t_far, L::load(tmax + o)) * L::broadcast(kSlabWiden);
+    if (t_enter != nullptr) t_near.store(t_enter);
+    return static_cast<std::uint32_t>(less_equal_mask(t_near, t_far)) << o;
+  };
 
   std::uint64_t nodes_visited = 0, prim_tests = 0;  // not reported: packets are never counted
   PacketStackEntry stack[kWideStackSize<W>];
@@ -116,16 +177,20 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
     std::uint32_t active = current.rays & alive;
     // Rays whose closest hit is already nearer than the subtree's entry leave it.
     if constexpr (!kAnyHit) {
-      for (std::uint32_t m = active; m != 0; m &= m - 1) {
-        const int i = std::countr_zero(m);
-        if (!(current.node.t <= tmax[i] * kSlabWiden)) active &= ~(1u << i);
+      std::uint32_t still = 0;
+      for (int g = 0; g < kPacketSize / kRayLanes; ++g) {
+        still |= static_cast<std::uint32_t>(less_equal_mask(L::broadcast(current.node.t),
+                                                            L::load(tmax + g * kRayLanes) * L::broadcast(kSlabWiden)))
+                 << (g * kRayLanes);
       }
+      active &= still;
     }
     if (active != 0 && std::popcount(active) <= kSingleRayThreshold) {
       for (std::uint32_t m = active; m != 0; m &= m - 1) {
         const int i = std::countr_zero(m);
-        if (walk_wide_bvh<kAnyHit, false, kOctant, W>(m_tree, m_geometry, current.node, box_rays[i], tri_rays[i],
-                                                      rays[i], tmax[i], best[i], nodes_visited, prim_tests)) {
+        Ray& r = rays[i];
+        if (walk_wide_bvh<kAnyHit, false, kOctant, W>(m_tree, m_geometry, current.node, WideBoxRay<W>(r), tri_ray(i), r,
+                                                      tmax[i], best[i], nodes_visited, prim_tests)) {
           found |= 1u << i;
           if constexpr (kAnyHit) alive &= ~(1u << i);
         }
@@ -134,40 +199,45 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
       for (std::uint32_t m = active; m != 0; m &= m - 1) {
         const int i = std::countr_zero(m);
         if (intersect_wide_leaf<kAnyHit, false, W>(m_tree.leaves, m_geometry, current.node.child, current.node.count,
-                                                   tri_rays[i], rays[i], rays[i].tmin, tmax[i], best[i], prim_tests)) {
+                                                   tri_ray(i), rays[i], tmin[i], tmax[i], best[i], prim_tests)) {
           found |= 1u << i;
           if constexpr (kAnyHit) alive &= ~(1u << i);
         }
       }
     } else if (active != 0) {
       const WideBvhNode<W>& node = m_tree.nodes[current.node.child];
-      float packet_tmax = 0.f;
-      for (std::uint32_t m = active; m != 0; m &= m - 1) packet_tmax = std::max(packet_tmax, tmax[std::countr_zero(m)]);
-      const unsigned candidates =
-          interval.valid ? interval.template test<kOctant>(node, tmin_lo, packet_tmax) : (1u << W) - 1u;
-      if (candidates != 0) {
-        std::uint32_t child_rays[W] = {};
-        float child_t[W];
-        std::fill(child_t, child_t + W, INFINITY);
-        for (std::uint32_t m = active; m != 0; m &= m - 1) {
-          const int i = std::countr_zero(m);
-          alignas(64) float t_enter[W];
-          unsigned hit_children = box_rays[i].template test<kOctant>(node, rays[i].tmin, tmax[i], t_enter) & candidates;
-          for (; hit_children != 0; hit_children &= hit_children - 1) {
-            const int c = std::countr_zero(hit_children);
-            child_rays[c] |= 1u << i;
-            child_t[c] = std::min(child_t[c], t_enter[c]);
+      alignas(64) float order_t[W];
+      unsigned candidates = WideBoxRay<W>::occupied_slots(node);
+      if (interval.valid) {
+        float packet_tmax = 0.f;
+        for (std::uint32_t m = active; m != 0; m &= m - 1)
+          packet_tmax = std::max(packet_tmax, tmax[std::countr_zero(m)]);
+        candidates &= interval.template test<kOctant>(node, tmin_lo, packet_tmax, order_t);
+      }
+      const int base = size;
+      for (; candidates != 0; candidates &= candidates - 1) {
+        const int c = std::countr_zero(candidates);
+        std::uint32_t entering = 0;
+        if (interval.valid) {
+          for (int g = 0; g < kPacketSize / kRayLanes; ++g) entering |= lanes_entering(node, c, g, nullptr);
+          entering &= active;
+        } else {
+          // No interval bound to order by: the nearest entry of the lanes that enter.
+          alignas(64) float t_enter[kPacketSize];
+          for (int g = 0; g < kPacketSize / kRayLanes; ++g) {
+            entering |= lanes_entering(node, c, g, t_enter + g * kRayLanes);
           }
+          entering &= active;
+          order_t[c] = INFINITY;
+          for (std::uint32_t m = entering; m != 0; m &= m - 1)
+            order_t[c] = std::min(order_t[c], t_enter[std::countr_zero(m)]);
         }
-        // Push the entered children farthest first, so the nearest is visited next.
-        const int base = size;
-        for (int c = 0; c < W; ++c) {
-          if (child_rays[c] == 0) continue;
-          const PacketStackEntry e{{node.child[c], node.count[c], child_t[c]}, child_rays[c]};
-          int b = size++;
-          for (; b > base && !kAnyHit && stack[b - 1].node.t < e.node.t; --b) stack[b] = stack[b - 1];
-          stack[b] = e;
-        }
+        if (entering == 0) continue;
+        // Push farthest first (closest hits), so the nearest is visited next.
+        const PacketStackEntry e{{node.child[c], node.count[c], order_t[c]}, entering};
+        int b = size++;
+        for (; b > base && !kAnyHit && stack[b - 1].node.t < e.node.t; --b) stack[b] = stack[b - 1];
+        stack[b] = e;
       }
     }
     if (size == 0) break;
