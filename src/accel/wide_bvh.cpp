@@ -2,6 +2,7 @@
 
 #include "raylab/accel/wide_bvh.h"
 
+#include <algorithm>
 #include <bit>
 #include <chrono>
 #include <cmath>
@@ -17,11 +18,20 @@ template <int W>
 WideBvh<W>::WideBvh(const Geometry& geometry, std::span<const std::uint32_t> ids, const BvhConfig& config)
     : m_geometry(geometry) {
   const auto start = std::chrono::steady_clock::now();
-  const BvhTree tree = build_bvh(geometry, ids, config);
+  const BvhTree tree = build_bvh(geometry, ids, build_config(config));
   m_tree = collapse_to_wide<W>(tree, geometry);
   const BvhNode& root = tree.nodes[0];
   if (!tree.prim_ids.empty()) m_bounds = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
   m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <int W>
+BvhConfig WideBvh<W>::build_config(const BvhConfig& config) {
+  // Leaves are blocks of four triangles tested at once, so the tree is priced that way: a leaf
+  // of one to four primitives costs one block test.
+  BvhConfig block_config = config;
+  block_config.leaf_block_size = std::max(config.leaf_block_size, 4);
+  return block_config;
 }
 
 template <int W>

@@ -79,6 +79,10 @@ class WideBvh final : public Accelerator {
   /// The tree, for tests and tools.
   const WideBvhTree<W>& tree() const { return m_tree; }
 
+  /// The configuration the binary tree is built with: `config` with leaves priced per block of
+  /// four primitives (at least), the leaf format's unit of work.
+  static BvhConfig build_config(const BvhConfig& config);
+
  private:
   template <bool kAnyHit, bool kCount>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
