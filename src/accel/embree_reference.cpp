@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -342,6 +343,8 @@ double EmbreeReference::binary_sah_cost(const BvhConfig& config) const {
   args.minLeafSize = 1;
   args.maxLeafSize =
       static_cast<unsigned>(std::clamp(config.max_leaf_size, 1, static_cast<int>(RTC_BUILD_MAX_PRIMITIVES_PER_LEAF)));
+  // Leaves priced per started block as sah_cost prices them (Embree takes a power of two).
+  args.sahBlockSize = std::bit_floor(static_cast<unsigned>(std::max(config.leaf_block_size, 1)));
   args.traversalCost = config.traversal_cost;
   args.intersectionCost = config.intersection_cost;
   args.bvh = bvh;

@@ -70,7 +70,8 @@ class EmbreeReference {
   void occluded16(std::span<const Ray> rays, std::span<std::uint8_t> occluded) const;
 
   /// The SAH cost of Embree's own binary tree over the primitive boxes: rtcBuildBVH with medium
-  /// quality, branching factor 2 and the leaf size and cost constants of `config`, collected
+  /// quality, branching factor 2 and the leaf size, leaf block size (as Embree's sahBlockSize,
+  /// rounded down to a power of two) and cost constants of `config`, collected
   /// through the builder's callbacks into a BvhTree and priced by sah_cost(tree, config), so the
   /// figure compares directly with sah_cost(build_bvh(geometry, config), config).
   double binary_sah_cost(const BvhConfig& config) const;
