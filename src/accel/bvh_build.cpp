@@ -141,18 +141,19 @@ struct BinSet {
       }
   }
 
+  void add_one(const BuildRef& r, Float4 lo4, Float4 scale4) {
+    const Float4 lo = load_lo(r), hi = load_hi(r);
+    float f[4];
+    ((lo + hi - lo4) * scale4).store(f);
+    for (int a = 0; a < 3; ++a) {
+      const int b = std::clamp(static_cast<int>(f[a]), 0, bins - 1);
+      box[a][b].extend(lo, hi);
+      ++count[a][b];
+    }
+  }
   void add(const BuildRef* refs, std::uint32_t n, const BinMap& map) {
     const Float4 lo4 = Float4::load(map.lo), scale4 = Float4::load(map.scale);
-    for (std::uint32_t i = 0; i < n; ++i) {
-      const Float4 lo = load_lo(refs[i]), hi = load_hi(refs[i]);
-      float f[4];
-      ((lo + hi - lo4) * scale4).store(f);
-      for (int a = 0; a < 3; ++a) {
-        const int b = std::clamp(static_cast<int>(f[a]), 0, bins - 1);
-        box[a][b].extend(lo, hi);
-        ++count[a][b];
-      }
-    }
+    for (std::uint32_t i = 0; i < n; ++i) add_one(refs[i], lo4, scale4);
   }
   void merge(const BinSet& o) {
     for (int a = 0; a < 3; ++a)
@@ -215,7 +216,7 @@ ObjectSplit best_object_split(const BinSet& set, float parent_area, const CostMo
 }
 
 // Nodes with at most this many references find their split without bins (small_object_split).
-constexpr std::uint32_t kSmallNode = 16;
+constexpr std::uint32_t kSmallNode = 10;
 
 // The split best_object_split would find, for a node of few references, computed from the
 // references directly: on each axis they are ordered by bin, and each boundary between two
