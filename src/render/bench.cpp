@@ -20,6 +20,7 @@
 #include "median.h"
 #include "raylab/accel/bvh.h"
 #include "raylab/accel/embree_reference.h"
+#include "raylab/accel/wide_bvh.h"
 #include "raylab/core/error.h"
 
 namespace raylab {
@@ -394,8 +395,11 @@ BenchReport run_bench(const Scene& scene, const BenchOptions& o, const BenchAcce
                               ref ? static_cast<double>(ref->scene_bytes()) / prims : 0.0};
   }
   progress("sah: pricing both binary trees");
-  rep.sah_cost.ours = rep.primitives > 0 ? sah_cost(build_bvh(g, o.accel_config.bvh), o.accel_config.bvh) : 0.0;
-  if (ref) rep.sah_cost.embree = ref->binary_sah_cost(o.accel_config.bvh);
+  // Both binary trees priced as the wide BVH builds its own: leaves per block of four primitives
+  // (Embree's leaves are blocks of four triangles too).
+  const BvhConfig priced = WideBvh<simd::kNativeBoxWidth>::build_config(o.accel_config.bvh);
+  rep.sah_cost.ours = rep.primitives > 0 ? sah_cost(build_bvh(g, priced), priced) : 0.0;
+  if (ref) rep.sah_cost.embree = ref->binary_sah_cost(priced);
 
   // The ray sets.
   RaySets sets;
