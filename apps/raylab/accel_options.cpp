@@ -16,6 +16,9 @@ void add_accel_parameter_options(CLI::App& cmd, AccelArgs& args) {
   cmd.add_option("--octree-max-depth", o.config.octree.max_depth, "Octree: deepest level of subdivision (L)")
       ->check(CLI::Range(0, 20))
       ->capture_default_str();
+  cmd.add_flag("--bvh-spatial-splits", o.config.bvh.spatial_splits,
+               "BVH (bvh, bvh2, bvh4, bvh8, bvh16): also consider spatial splits (SBVH): triangles may be clipped "
+               "into several leaves; a lower SAH cost for a slower build");
   cmd.add_option("--wrap", args.wrap, "Bounding volume around each mesh and instance: none, box or sphere")
       ->check(CLI::IsMember({"none", "box", "sphere"}))
       ->capture_default_str();

@@ -16,7 +16,8 @@ struct AccelArgs {
   std::string wrap = "none";
 };
 
-/// Adds --grid-density, --octree-max-items, --octree-max-depth, --wrap and --bottom-accel.
+/// Adds --grid-density, --octree-max-items, --octree-max-depth, --bvh-spatial-splits, --wrap and
+/// --bottom-accel.
 void add_accel_parameter_options(CLI::App& cmd, AccelArgs& args);
 
 /// The accelerator names this build knows, for CLI11's IsMember check.

@@ -32,6 +32,7 @@ struct BenchArgs {
   int width = 1024;
   int height = 768;
   std::string rays_file, rays_out, hits_out, json;
+  bool spatial_splits = false;
   bool allow_outside_paths = false;
   bool quiet = false;
 };
@@ -60,6 +61,7 @@ int run(const BenchArgs& args) {
   options.height = args.height;
   options.against_embree = args.against == "embree";
   options.accel = args.accel;
+  options.accel_config.bvh.spatial_splits = args.spatial_splits;
   if (!args.quiet) options.on_progress = [](const std::string& line) { fmt::print(stderr, "bench: {}\n", line); };
   if (!args.rays_file.empty()) {
     options.use_file_rays = true;
@@ -128,6 +130,8 @@ CommandRunner add_bench_command(CLI::App& app) {
   cmd->add_option("--accel", args->accel, "Our acceleration structure")
       ->check(CLI::IsMember(accelerator_choices()))
       ->capture_default_str();
+  cmd->add_flag("--bvh-spatial-splits", args->spatial_splits,
+                "Build our BVH with spatial splits (SBVH) too; Embree stays at its medium quality");
   cmd->add_option("--rays-file", args->rays_file,
                   "Trace the rays of this .rays file (closest hit, singles and packets) instead of generated ones")
       ->excludes(rays);
