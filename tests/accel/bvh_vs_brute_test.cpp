@@ -1,7 +1,8 @@
-// BVH-only checks ("bvh", the 4-wide one, and "bvh2", the binary one): other build parameters,
-// group queries, a single leaf, and the factory. The comparison with brute force on the stress
-// scenes runs for every structure in accel_vs_brute_test.cpp; the binary tree's structure is
-// checked in bvh_tree_test.cpp, the 4-wide collapse in bvh4_test.cpp.
+// BVH-only checks ("bvh", the wide one at the native width, "bvh4", "bvh8", "bvh16", and "bvh2",
+// the binary one): other build parameters, group queries, a single leaf, and the factory. The
+// comparison with brute force on the stress scenes runs for every structure in
+// accel_vs_brute_test.cpp; the binary tree's structure is checked in bvh_tree_test.cpp, the wide
+// collapse in wide_bvh_test.cpp.
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Scenes and rays shared by the accelerator tests (bvh_vs_brute_test, bvh_tree_test, bvh4_test):
+// Scenes and rays shared by the accelerator tests (bvh_vs_brute_test, bvh_tree_test, wide_bvh_test):
 // overlap, slivers, sizes over eight orders of magnitude, dense soups, every shape kind, and closed
 // meshes with axis-aligned (zero-thickness box) faces. All from fixed seeds.
 

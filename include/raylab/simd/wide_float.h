@@ -121,10 +121,12 @@ struct Float16 {
 
 inline Float16 operator-(Float16 a, Float16 b) { return {_mm512_sub_ps(a.v, b.v)}; }
 inline Float16 operator*(Float16 a, Float16 b) { return {_mm512_mul_ps(a.v, b.v)}; }
+// The zero-masking forms with every lane selected are plain VMINPS/VMAXPS; GCC 12's unmasked
+// _mm512_min_ps/_mm512_max_ps start from an undefined register and raise -Wmaybe-uninitialized.
 /// Lane-wise a < b ? a : b (so b when either is NaN): VMINPS.
-inline Float16 min(Float16 a, Float16 b) { return {_mm512_min_ps(a.v, b.v)}; }
+inline Float16 min(Float16 a, Float16 b) { return {_mm512_maskz_min_ps(0xFFFF, a.v, b.v)}; }
 /// Lane-wise a > b ? a : b (so b when either is NaN): VMAXPS.
-inline Float16 max(Float16 a, Float16 b) { return {_mm512_max_ps(a.v, b.v)}; }
+inline Float16 max(Float16 a, Float16 b) { return {_mm512_maskz_max_ps(0xFFFF, a.v, b.v)}; }
 /// Bit i set where a[i] <= b[i] (clear where either is NaN).
 inline unsigned less_equal_mask(Float16 a, Float16 b) {
   return static_cast<unsigned>(_mm512_cmp_ps_mask(a.v, b.v, _CMP_LE_OQ));
