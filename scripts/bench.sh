@@ -27,7 +27,7 @@ done
 # Embree user geometry) and spd:mount at level 10 (2.1M triangles). Each table is preceded by the
 # command that produced it; a scene whose file is missing is skipped with a note.
 shared=../shared/scenes
-for scene in bench/scenes/bunny-on-ground.json "$shared/igea.ply" spd:balls 'spd:mount?size=10'; do
+for scene in bench/scenes/bunny-on-ground-triangles.json bench/scenes/bunny-on-ground.json "$shared/igea.ply" spd:balls 'spd:mount?size=10'; do
   case "$scene" in
     spd:*) ;;
     *) if [ ! -f "$scene" ]; then echo; echo "(skipped $scene: not found)"; continue; fi ;;

@@ -107,7 +107,15 @@ void trace(const EmbreeReference& ref, std::span<const Ray> rays, std::span<std:
   });
 }
 
-bool close(double a, double b) { return std::fabs(a - b) <= kRelTol * std::max(std::fabs(a), std::fabs(b)); }
+// Distances agree within kRelTol relative, or within the rounding of positions near the ray's
+// origin: a ray leaving a surface can meet its own or a neighbouring triangle at t ~ 1e-6, where
+// two correct float tests differ by far more than 1e-4 of t (but by less than 16 ulps of the
+// origin's coordinates).
+bool close(double a, double b, const Ray& ray) {
+  const double origin_scale =
+      std::max({std::fabs(ray.origin.x), std::fabs(ray.origin.y), std::fabs(ray.origin.z)}) * std::ldexp(16.0, -24);
+  return std::fabs(a - b) <= std::max(kRelTol * std::max(std::fabs(a), std::fabs(b)), origin_scale);
+}
 
 // Distance along `ray` to primitive `prim` by our own test, ignoring tmax; for a triangle whose
 // watertight test rejects the point (an edge its neighbour owns), the distance to its plane;
@@ -142,13 +150,13 @@ BenchAgreement check_closest(const Geometry& g, std::span<const Ray> rays, std::
   BenchAgreement a;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     const Hit &o = ours[i], &e = other[i];
-    auto same_t = [&](const Hit& x) { return o.valid() == x.valid() && (!o.valid() || close(o.t, x.t)); };
+    auto same_t = [&](const Hit& x) { return o.valid() == x.valid() && (!o.valid() || close(o.t, x.t, rays[i])); };
     if (same_t(e)) {
       if (!o.valid() || o.prim_id == e.prim_id) {
         ++a.same;
         continue;
       }
-      if (close(o.t, t_of(g, rays[i], e.prim_id))) {
+      if (close(o.t, t_of(g, rays[i], e.prim_id), rays[i])) {
         ++a.ties;
         continue;
       }
@@ -194,7 +202,9 @@ BenchAgreement check_any(const Accelerator& ours_accel, std::span<const Ray> ray
       }
       robust->intersect1(std::span(&open, 1), std::span(&nearest[1], 1), true);
     }
-    auto at_end = [&](const Hit& h) { return h.valid() && (close(h.t, rays[i].tmax) || close(h.t, rays[i].tmin)); };
+    auto at_end = [&](const Hit& h) {
+      return h.valid() && (close(h.t, rays[i].tmax, rays[i]) || close(h.t, rays[i].tmin, rays[i]));
+    };
     if (at_end(nearest[0]) || at_end(nearest[1])) {
       ++a.ties;
       continue;
