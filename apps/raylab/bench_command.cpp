@@ -33,6 +33,7 @@ struct BenchArgs {
   int height = 768;
   std::string rays_file, rays_out, hits_out, json;
   bool spatial_splits = false;
+  std::string embree_isa = "best";
   bool allow_outside_paths = false;
   bool quiet = false;
 };
@@ -62,6 +63,7 @@ int run(const BenchArgs& args) {
   options.against_embree = args.against == "embree";
   options.accel = args.accel;
   options.accel_config.bvh.spatial_splits = args.spatial_splits;
+  if (args.embree_isa != "best") options.embree_isa = args.embree_isa;
   if (!args.quiet) options.on_progress = [](const std::string& line) { fmt::print(stderr, "bench: {}\n", line); };
   if (!args.rays_file.empty()) {
     options.use_file_rays = true;
@@ -129,6 +131,11 @@ CommandRunner add_bench_command(CLI::App& app) {
   cmd->add_option("--height", args->height, "Rows of primary rays")->check(CLI::Range(1, 16384))->capture_default_str();
   cmd->add_option("--accel", args->accel, "Our acceleration structure")
       ->check(CLI::IsMember(accelerator_choices()))
+      ->capture_default_str();
+  cmd->add_option("--embree-isa", args->embree_isa,
+                  "Embree's kernels: best (Embree's choice for this CPU), or restricted to sse2, sse4.2, avx, avx2 "
+                  "or avx512, e.g. to match the instruction set raylab was built for")
+      ->check(CLI::IsMember({"best", "sse2", "sse4.2", "avx", "avx2", "avx512"}))
       ->capture_default_str();
   cmd->add_flag("--bvh-spatial-splits", args->spatial_splits,
                 "Build our BVH with spatial splits (SBVH) too; Embree stays at its medium quality");

@@ -206,7 +206,7 @@ struct EmbreeReference::State {
 
 bool embree_reference_available() { return true; }
 
-EmbreeReference::EmbreeReference(const Geometry& geometry) : m(std::make_unique<State>()) {
+EmbreeReference::EmbreeReference(const Geometry& geometry, const std::string& isa) : m(std::make_unique<State>()) {
   static_assert(sizeof(Triangle) == 9 * sizeof(float), "the shared vertex buffer needs packed triangles");
   if (!geometry.groups.empty()) throw std::runtime_error("EmbreeReference: groups are not supported");
   m->geometry = &geometry;
@@ -218,8 +218,9 @@ EmbreeReference::EmbreeReference(const Geometry& geometry) : m(std::make_unique<
   m->user.geometry = &geometry;
   m->user.first_id = static_cast<std::uint32_t>(geometry.triangles.size());
   m->user_count = geometry.size() - geometry.triangles.size();
-  m->device = rtcNewDevice(nullptr);
-  if (!m->device) throw std::runtime_error("embree: rtcNewDevice failed");
+  const std::string config = isa.empty() ? std::string() : "isa=" + isa;
+  m->device = rtcNewDevice(config.empty() ? nullptr : config.c_str());
+  if (!m->device) throw std::runtime_error("embree: rtcNewDevice failed (configuration '" + config + "')");
   rtcSetDeviceMemoryMonitorFunction(m->device, count_bytes, &m->allocated);
   rebuild();
 }
@@ -393,7 +394,7 @@ struct EmbreeReference::State {};
 
 bool embree_reference_available() { return false; }
 
-EmbreeReference::EmbreeReference(const Geometry&) {
+EmbreeReference::EmbreeReference(const Geometry&, const std::string&) {
   throw UsageError("raylab was built without Embree 3 (install libembree-dev and reconfigure)");
 }
 EmbreeReference::~EmbreeReference() = default;

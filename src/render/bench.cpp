@@ -374,12 +374,14 @@ BenchReport run_bench(const Scene& scene, const BenchOptions& o, const BenchAcce
     rep.notes.push_back("Embree not measured: raylab was built without Embree 3; our figures only");
   } else {
     progress("embree: creating the device and the first scene");
-    ref = std::make_unique<EmbreeReference>(g);
+    ref = std::make_unique<EmbreeReference>(g, o.embree_isa);
     rep.embree = true;
     rep.user_primitives = ref->user_primitive_count();
     rep.notes.push_back(
         "Embree 3: default scene flags, RTC_BUILD_QUALITY_MEDIUM; single rays rtcIntersect1/rtcOccluded1, packets "
-        "rtcIntersect16/rtcOccluded16 with a coherent context; edge disagreements settled by a robust scene");
+        "rtcIntersect16/rtcOccluded16 with a coherent context; edge disagreements settled by a robust scene; "
+        "kernels: " +
+        (o.embree_isa.empty() ? std::string("Embree's choice for this CPU") : o.embree_isa));
     if (rep.user_primitives > 0) {
       rep.notes.push_back(fmt::format(
           "{} non-triangle primitives are Embree user geometry calling raylab's own shape tests (not tessellated)",

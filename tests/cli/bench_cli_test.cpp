@@ -26,6 +26,7 @@ TEST_F(Cli, BenchUsageErrorsExitWithTwo) {
                          "bench 'spd:balls?size=1' --repeats 0",
                          "bench 'spd:balls?size=1' --against optix",
                          "bench 'spd:balls?size=1' --accel kdtree",
+                         "bench 'spd:balls?size=1' --embree-isa avx1024",
                          "bench 'spd:balls?size=1' --rays primary --rays-file x.rays",
                          "bench no-such-scene"};
   for (const char* args : cases) {

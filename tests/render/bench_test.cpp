@@ -157,6 +157,22 @@ TEST(Bench, ATriangleMeshWithoutPointLightsAgreesToo) {
   EXPECT_EQ(r.accel, "bvh2");
 }
 
+// Embree restricted to AVX2 kernels (to compare with raylab's AVX2 build like with like) answers
+// as its default kernels do, and the report says which kernels ran.
+TEST(Bench, EmbreeRestrictedToAvx2AgreesToo) {
+  if (!embree_reference_available()) GTEST_SKIP() << "built without Embree";
+  Scene scene = load_scene("spd:tetra?size=2");
+  BenchOptions o = small_options();
+  o.kinds = {BenchRayKind::kPrimary, BenchRayKind::kShadow};
+  o.embree_isa = "avx2";
+  const BenchReport r = run_bench(scene, o);
+  ASSERT_TRUE(r.embree);
+  for (const BenchSetReport& s : r.sets) expect_accounted(s.single, s.rays, s.name);
+  bool named = false;
+  for (const std::string& note : r.notes) named = named || note.find("kernels: avx2") != std::string::npos;
+  EXPECT_TRUE(named);
+}
+
 TEST(Bench, FileRaysAreTracedAndTheirHitsMatchBruteForce) {
   const Scene scene = load_scene("spd:balls?size=1");
   BenchOptions o = small_options();

@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 
 #include "raylab/accel/bvh.h"
 #include "raylab/core/ray.h"
@@ -38,9 +39,11 @@ class EmbreeReference {
  public:
   /// Creates the device and the geometry buffers (a padded copy of the triangles, shared with
   /// Embree so that a build times the BVH alone, as ours does) and builds the default scene.
-  /// `geometry` must outlive this object unchanged and must hold no groups. Throws UsageError
+  /// `geometry` must outlive this object unchanged and must hold no groups. `isa` restricts
+  /// Embree's kernels to one instruction set ("sse2", "sse4.2", "avx", "avx2", "avx512"); empty:
+  /// Embree picks the best this CPU has (AVX-512 on the development machine). Throws UsageError
   /// when raylab was built without Embree, std::runtime_error when Embree fails.
-  explicit EmbreeReference(const Geometry& geometry);
+  explicit EmbreeReference(const Geometry& geometry, const std::string& isa = "");
   ~EmbreeReference();
   EmbreeReference(const EmbreeReference&) = delete;
   EmbreeReference& operator=(const EmbreeReference&) = delete;

@@ -32,6 +32,7 @@ struct BenchOptions {
   int width = 1024;            ///< primary rays per row
   int height = 768;            ///< rows of primary rays
   bool against_embree = true;  ///< also measure Embree (when raylab was built with it)
+  std::string embree_isa;      ///< Embree's instruction set ("avx2", ...); empty: Embree's choice
   std::string accel = "bvh";   ///< our structure, by factory name
   AccelConfig accel_config;    ///< its parameters; `bvh` also prices both binary trees
   std::uint64_t seed = 0;      ///< seed of the shadow-ray light samples and the bounce directions
