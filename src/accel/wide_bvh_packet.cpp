@@ -105,6 +105,20 @@ PacketInterval<W> packet_interval(const float (&origin)[3][kPacketSize], const f
   return interval;
 }
 
+/// Calls `fn(begin, end)` for each run of up to kPacketSize consecutive rays of one direction
+/// octant, in order: the packets a group of rays is traced as.
+template <class Fn>
+void for_each_octant_run(std::span<const Ray> rays, const Fn& fn) {
+  std::size_t begin = 0;
+  while (begin < rays.size()) {
+    const int octant = direction_octant(rays[begin].direction);
+    std::size_t end = begin + 1;
+    while (end < rays.size() && end - begin < kPacketSize && direction_octant(rays[end].direction) == octant) ++end;
+    fn(begin, end);
+    begin = end;
+  }
+}
+
 /// A subtree waiting to be visited by the rays in `rays` (bit i: lane i), entered by the
 /// nearest of them at `t`.
 struct PacketStackEntry {
@@ -265,39 +279,30 @@ void WideBvh<W>::trace_packet(Ray* rays, Hit* hits, std::uint8_t* occluded_out, 
 template <int W>
 void WideBvh<W>::intersect(std::span<Ray> rays, std::span<Hit> hits) const {
   if (m_tree.leaves.blocks.empty()) return;
-  // Runs of up to 16 consecutive rays of one octant form a packet; a lone ray goes alone.
-  std::size_t i = 0;
-  while (i < rays.size()) {
-    const int octant = direction_octant(rays[i].direction);
-    std::size_t end = i + 1;
-    while (end < rays.size() && end - i < kPacketSize && direction_octant(rays[end].direction) == octant) ++end;
-    if (end - i == 1) {
-      intersect(rays[i], hits[i]);
+  for_each_octant_run(rays, [&](std::size_t begin, std::size_t end) {
+    if (end - begin == 1) {
+      intersect(rays[begin], hits[begin]);
     } else {
-      trace_packet<false>(&rays[i], &hits[i], nullptr, static_cast<int>(end - i));
+      trace_packet<false>(&rays[begin], &hits[begin], nullptr, static_cast<int>(end - begin));
     }
-    i = end;
-  }
+  });
 }
 
 template <int W>
 void WideBvh<W>::occluded(std::span<const Ray> rays, std::span<std::uint8_t> occluded_out) const {
-  std::size_t i = 0;
-  while (i < rays.size()) {
-    const int octant = direction_octant(rays[i].direction);
-    std::size_t end = i + 1;
-    while (end < rays.size() && end - i < kPacketSize && direction_octant(rays[end].direction) == octant) ++end;
-    if (m_tree.leaves.blocks.empty()) {
-      std::fill(occluded_out.begin() + i, occluded_out.begin() + end, std::uint8_t{0});
-    } else if (end - i == 1) {
-      occluded_out[i] = occluded(rays[i]) ? 1 : 0;
+  if (m_tree.leaves.blocks.empty()) {
+    std::fill(occluded_out.begin(), occluded_out.begin() + static_cast<std::ptrdiff_t>(rays.size()), std::uint8_t{0});
+    return;
+  }
+  for_each_octant_run(rays, [&](std::size_t begin, std::size_t end) {
+    if (end - begin == 1) {
+      occluded_out[begin] = occluded(rays[begin]) ? 1 : 0;
     } else {
       // The packet kernel writes no ray state for any-hit queries; it takes a mutable pointer
       // only because closest-hit queries share it.
-      trace_packet<true>(const_cast<Ray*>(&rays[i]), nullptr, &occluded_out[i], static_cast<int>(end - i));
+      trace_packet<true>(const_cast<Ray*>(&rays[begin]), nullptr, &occluded_out[begin], static_cast<int>(end - begin));
     }
-    i = end;
-  }
+  });
 }
 
 template void WideBvh<4>::intersect(std::span<Ray>, std::span<Hit>) const;
