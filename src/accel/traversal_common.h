@@ -21,6 +21,21 @@ struct LeafPrimitives {
   const Geometry* geometry;
 };
 
+/// Tests primitive (or group) `id`, not a triangle, through the Geometry against `ray` restricted
+/// to [tmin, tmax). Closest hit: on a hit shrinks `tmax` and updates `best`. With kAnyHit only
+/// answers whether anything is hit (a group, a whole sub-structure, may stop at its first hit).
+template <bool kAnyHit>
+inline bool intersect_other(const Geometry& geometry, std::uint32_t id, const WatertightRay& tri_ray, const Ray& ray,
+                            float tmin, float& tmax, Hit& best) {
+  Ray probe = ray;
+  probe.tmin = tmin;
+  probe.tmax = tmax;
+  if constexpr (kAnyHit) return geometry.occluded(id, tri_ray, probe);
+  const bool hit = geometry.intersect(id, tri_ray, probe, best);
+  tmax = probe.tmax;
+  return hit;
+}
+
 /// Tests references [first, first + count) against `ray` restricted to [tmin, tmax); on a hit
 /// shrinks `tmax` and updates `best`. With kAnyHit, returns at the first hit. Returns whether
 /// anything was hit; counts tests in `prim_tests` when kCount.
@@ -42,16 +57,7 @@ inline bool intersect_leaf(const LeafPrimitives& leaf, std::uint32_t first, std:
         best = {t, id, u, v};
       }
     } else {
-      Ray probe = ray;
-      probe.tmin = tmin;
-      probe.tmax = tmax;
-      if constexpr (kAnyHit) {
-        // Any hit will do: a group (a whole sub-structure) may stop at its first one.
-        if (leaf.geometry->occluded(id, tri_ray, probe)) return true;
-        continue;
-      }
-      hit_here = leaf.geometry->intersect(id, tri_ray, probe, best);
-      tmax = probe.tmax;
+      hit_here = intersect_other<kAnyHit>(*leaf.geometry, id, tri_ray, ray, tmin, tmax, best);
     }
     if (hit_here) {
       found = true;

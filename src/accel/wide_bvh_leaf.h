@@ -47,17 +47,9 @@ inline bool intersect_wide_leaf(const WideBvhLeaves& leaves, const Geometry& geo
     for (int i = 0; i < 4; ++i) {
       const std::uint32_t id = block.id[i];
       if (id < triangle_count || id == TriangleBlock4::kNoPrimitive) continue;
-      Ray probe = ray;
-      probe.tmin = tmin;
-      probe.tmax = tmax;
-      if constexpr (kAnyHit) {
-        // Any hit will do: a group (a whole sub-structure) may stop at its first one.
-        if (geometry.occluded(id, tri_ray, probe)) return true;
-        continue;
-      }
-      if (geometry.intersect(id, tri_ray, probe, best)) {
-        tmax = probe.tmax;
+      if (intersect_other<kAnyHit>(geometry, id, tri_ray, ray, tmin, tmax, best)) {
         found = true;
+        if constexpr (kAnyHit) return true;
       }
     }
   }
