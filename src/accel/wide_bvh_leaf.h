@@ -11,23 +11,60 @@
 
 namespace raylab {
 
-/// Tests the blocks [first, first + count) of a leaf (`count_flags` as stored in the node) against
-/// `ray` restricted to [tmin, tmax); on a hit shrinks `tmax` and updates `best`. Lanes are taken
-/// in order with the exact `t < tie_limit` rule, so the result is the same as testing the
-/// references one by one (the closest hit, lower id on ties). With kAnyHit, returns at the first
-/// hit. Counts the primitives tested in `prim_tests` when kCount.
+/// The number of triangle blocks of a leaf whose node slot holds `count_flags`: the leaf's
+/// triangles are the blocks [first, first + this), lanes with ids >= triangle_count excepted.
+template <int W>
+inline std::uint32_t leaf_block_count(std::uint32_t count_flags) {
+  return count_flags & ~WideBvhNode<W>::kLeafHasOthers;
+}
+
+/// Whether the leaf holds primitives other than triangles (tested by intersect_wide_leaf_others).
+template <int W>
+inline bool leaf_has_others(std::uint32_t count_flags) {
+  return (count_flags & WideBvhNode<W>::kLeafHasOthers) != 0;
+}
+
+/// Tests the non-triangle primitives of a leaf (`first` and `count_flags` as stored in its node
+/// slot) against `ray` restricted to [tmin, tmax); on a hit shrinks `tmax` and updates `best`
+/// (closest hit, lower id on ties). With kAnyHit, returns at the first hit. Counts the
+/// primitives tested in `prim_tests` when kCount.
 template <bool kAnyHit, bool kCount, int W>
-inline bool intersect_wide_leaf(const WideBvhLeaves& leaves, const Geometry& geometry, std::uint32_t first,
-                                std::uint32_t count_flags, const WatertightRay& tri_ray, const Ray& ray, float tmin,
-                                float& tmax, Hit& best, std::uint64_t& prim_tests) {
-  const std::uint32_t count = count_flags & ~WideBvhNode<W>::kLeafHasOthers;
-  const bool others = (count_flags & WideBvhNode<W>::kLeafHasOthers) != 0;
+inline bool intersect_wide_leaf_others(const WideBvhLeaves& leaves, const Geometry& geometry, std::uint32_t first,
+                                       std::uint32_t count_flags, const WatertightRay& tri_ray, const Ray& ray,
+                                       float tmin, float& tmax, Hit& best, std::uint64_t& prim_tests) {
+  if (!leaf_has_others<W>(count_flags)) return false;
   const std::uint32_t triangle_count = leaves.triangle_count;
   bool found = false;
-  for (std::uint32_t b = first; b < first + count; ++b) {
+  for (std::uint32_t b = first; b < first + leaf_block_count<W>(count_flags); ++b) {
+    const TriangleBlock4& block = leaves.blocks[b];
+    for (int i = 0; i < 4; ++i) {
+      const std::uint32_t id = block.id[i];
+      if (id < triangle_count || id == TriangleBlock4::kNoPrimitive) continue;
+      if constexpr (kCount) ++prim_tests;
+      if (intersect_other<kAnyHit>(geometry, id, tri_ray, ray, tmin, tmax, best)) {
+        found = true;
+        if constexpr (kAnyHit) return true;
+      }
+    }
+  }
+  return found;
+}
+
+/// Tests the triangles of a leaf (`first` and `count_flags` as stored in its node slot) against
+/// `ray` restricted to [tmin, tmax); on a hit shrinks `tmax` and updates `best`. Lanes are taken
+/// in order with the exact `t < tie_limit` rule, so the result is the same as testing the
+/// triangles one by one (the closest hit, lower id on ties). With kAnyHit, returns at the first
+/// hit. Counts the triangles tested in `prim_tests` when kCount.
+template <bool kAnyHit, bool kCount, int W>
+inline bool intersect_wide_leaf_triangles(const WideBvhLeaves& leaves, std::uint32_t first, std::uint32_t count_flags,
+                                          const WatertightRay& tri_ray, float tmin, float& tmax, Hit& best,
+                                          std::uint64_t& prim_tests) {
+  const std::uint32_t triangle_count = leaves.triangle_count;
+  bool found = false;
+  for (std::uint32_t b = first; b < first + leaf_block_count<W>(count_flags); ++b) {
     const TriangleBlock4& block = leaves.blocks[b];
     if constexpr (kCount) {
-      for (int i = 0; i < 4; ++i) prim_tests += block.id[i] != TriangleBlock4::kNoPrimitive ? 1 : 0;
+      for (int i = 0; i < 4; ++i) prim_tests += block.id[i] < triangle_count ? 1 : 0;
     }
     alignas(16) float t[4], u[4], v[4];
     int mask = intersect_triangle_block(block, tri_ray, tmin, tmax, t, u, v);
@@ -43,16 +80,24 @@ inline bool intersect_wide_leaf(const WideBvhLeaves& leaves, const Geometry& geo
         if constexpr (kAnyHit) return true;
       }
     }
-    if (!others) continue;
-    for (int i = 0; i < 4; ++i) {
-      const std::uint32_t id = block.id[i];
-      if (id < triangle_count || id == TriangleBlock4::kNoPrimitive) continue;
-      if (intersect_other<kAnyHit>(geometry, id, tri_ray, ray, tmin, tmax, best)) {
-        found = true;
-        if constexpr (kAnyHit) return true;
-      }
-    }
   }
+  return found;
+}
+
+/// Tests every primitive of a leaf against `ray` restricted to [tmin, tmax): the triangles, then
+/// the other kinds. The closest hit (lower id on ties) whatever the order; with kAnyHit, returns
+/// at the first hit. Counts the primitives tested in `prim_tests` when kCount.
+template <bool kAnyHit, bool kCount, int W>
+inline bool intersect_wide_leaf(const WideBvhLeaves& leaves, const Geometry& geometry, std::uint32_t first,
+                                std::uint32_t count_flags, const WatertightRay& tri_ray, const Ray& ray, float tmin,
+                                float& tmax, Hit& best, std::uint64_t& prim_tests) {
+  bool found =
+      intersect_wide_leaf_triangles<kAnyHit, kCount, W>(leaves, first, count_flags, tri_ray, tmin, tmax, best, prim_tests);
+  if constexpr (kAnyHit) {
+    if (found) return true;
+  }
+  found |= intersect_wide_leaf_others<kAnyHit, kCount, W>(leaves, geometry, first, count_flags, tri_ray, ray, tmin, tmax,
+                                                          best, prim_tests);
   return found;
 }
 
