@@ -37,7 +37,7 @@ BvhConfig WideBvh<W>::build_config(const BvhConfig& config) {
 template <int W>
 template <bool kAnyHit, bool kCount>
 bool WideBvh<W>::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
-  if (m_tree.leaves.blocks.empty()) return false;
+  if (m_tree.leaves.empty()) return false;
   return dispatch_octant(direction_octant(ray.direction), [&](auto octant) {
     return traverse_octant<kAnyHit, kCount, decltype(octant)::value>(ray, hit, stats);
   });

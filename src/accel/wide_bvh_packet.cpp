@@ -278,7 +278,7 @@ void WideBvh<W>::trace_packet(Ray* rays, Hit* hits, std::uint8_t* occluded_out, 
 
 template <int W>
 void WideBvh<W>::intersect(std::span<Ray> rays, std::span<Hit> hits) const {
-  if (m_tree.leaves.blocks.empty()) return;
+  if (m_tree.leaves.empty()) return;
   for_each_octant_run(rays, [&](std::size_t begin, std::size_t end) {
     if (end - begin == 1) {
       intersect(rays[begin], hits[begin]);
@@ -290,7 +290,7 @@ void WideBvh<W>::intersect(std::span<Ray> rays, std::span<Hit> hits) const {
 
 template <int W>
 void WideBvh<W>::occluded(std::span<const Ray> rays, std::span<std::uint8_t> occluded_out) const {
-  if (m_tree.leaves.blocks.empty()) {
+  if (m_tree.leaves.empty()) {
     std::fill(occluded_out.begin(), occluded_out.begin() + static_cast<std::ptrdiff_t>(rays.size()), std::uint8_t{0});
     return;
   }

@@ -39,6 +39,9 @@ struct alignas(64) WideBvhNode {
 struct WideBvhLeaves {
   std::vector<TriangleBlock4> blocks;
   std::uint32_t triangle_count = 0;  ///< primitive ids below this are triangles
+
+  /// Whether no leaf holds anything (no ray can hit).
+  bool empty() const { return blocks.empty(); }
 };
 
 /// A wide tree as plain data.
