@@ -85,13 +85,18 @@ AccelInfo WideBvh<W>::info() const {
   AccelInfo info;
   info.name = W == simd::kNativeBoxWidth ? "bvh" : "bvh" + std::to_string(W);
   info.build_seconds = m_build_seconds;
-  info.memory_bytes =
-      m_tree.nodes.size() * sizeof(WideBvhNode<W>) + m_tree.leaves.blocks.size() * sizeof(TriangleBlock4);
+  const WideBvhLeaves& leaves = m_tree.leaves;
+  info.memory_bytes = m_tree.nodes.size() * sizeof(WideBvhNode<W>) + leaves.blocks.size() * sizeof(TriangleBlock4) +
+                      leaves.others.size() * sizeof(std::uint32_t);
   info.node_count = m_tree.nodes.size();
   info.leaf_count = m_tree.leaf_count;
+  // References: the used lanes of the blocks and the ids listed by the leaves (not the headers).
   std::size_t references = 0;
-  for (const TriangleBlock4& b : m_tree.leaves.blocks) {
+  for (const TriangleBlock4& b : leaves.blocks) {
     for (std::uint32_t id : b.id) references += id != TriangleBlock4::kNoPrimitive ? 1 : 0;
+  }
+  for (const WideBvhNode<W>& node : m_tree.nodes) {
+    for (int i = 0; i < W; ++i) references += leaves.others_of(node.child[i], node.count[i]).size();
   }
   info.primitive_count = references;
   info.max_depth = m_tree.max_depth;

@@ -1,7 +1,11 @@
-// Collapsing the binary BVH into W-wide nodes with leaves packed in blocks of four triangles.
+// Collapsing the binary BVH into W-wide nodes, with leaves' triangles packed in blocks of four
+// and their other primitives listed by id.
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <utility>
 
 #include "raylab/accel/wide_bvh.h"
 
@@ -19,9 +23,10 @@ class WideCollapser {
   WideCollapser(const BvhTree& tree, const Geometry& geometry) : m_tree(tree), m_geometry(geometry) {}
 
   WideBvhTree<W> run() {
-    m_out.leaves.triangle_count = static_cast<std::uint32_t>(m_geometry.triangles.size());
+    WideBvhLeaves& leaves = m_out.leaves;
+    leaves.triangle_count = static_cast<std::uint32_t>(m_geometry.triangles.size());
     m_out.nodes.reserve(m_tree.nodes.size() / (W - 1) + 1);
-    m_out.leaves.blocks.reserve(m_tree.prim_ids.size() / 2 + 1);
+    size_leaves();
     if (m_tree.prim_ids.empty()) {
       m_out.nodes.push_back(empty_node());  // nothing to hold: every slot empty
     } else if (m_tree.nodes[0].is_leaf()) {
@@ -34,6 +39,54 @@ class WideCollapser {
   }
 
  private:
+  // How a binary leaf's references divide: the triangles that go into blocks, and the ids that
+  // go into `others` (the other kinds, and the triangles beyond kMaxMixedBlocks blocks of a leaf
+  // that holds both).
+  struct LeafSplit {
+    std::uint32_t block_triangles = 0;
+    std::uint32_t other_ids = 0;
+
+    std::uint32_t blocks() const { return (block_triangles + 3) / 4; }
+    bool mixed() const { return block_triangles != 0 && other_ids != 0; }
+  };
+
+  // The split of binary leaf `b`.
+  LeafSplit split_of(const BvhNode& b) const {
+    std::uint32_t triangles = 0;
+    for (std::uint32_t i = 0; i < b.count; ++i) triangles += is_triangle(m_tree.prim_ids[b.first + i]) ? 1 : 0;
+    LeafSplit split;
+    split.block_triangles = triangles;
+    split.other_ids = b.count - triangles;
+    if (split.other_ids != 0) split.block_triangles = std::min(triangles, WideBvhLeaves::kMaxMixedBlocks * 4);
+    split.other_ids = b.count - split.block_triangles;
+    return split;
+  }
+
+  bool is_triangle(std::uint32_t id) const { return id < m_out.leaves.triangle_count; }
+
+  // Sizes the leaf arrays exactly, and puts the leaves holding both kinds first in `others`
+  // (their starts must fit in the bits of `count` above the block count).
+  void size_leaves() {
+    std::size_t blocks = 0, mixed = 0, others = 0;
+    for (const BvhNode& b : m_tree.nodes) {
+      if (!b.is_leaf()) continue;
+      const LeafSplit split = split_of(b);
+      blocks += split.blocks();
+      if (split.mixed()) {
+        mixed += 1 + split.other_ids;  // a header, then the ids
+      } else {
+        others += split.other_ids;
+      }
+    }
+    if (mixed > WideBvhLeaves::kMaxOthersField || mixed + others > UINT32_MAX) {
+      throw std::length_error("wide BVH: too many primitives listed by id in the leaves");
+    }
+    m_out.leaves.blocks.reserve(blocks);
+    m_out.leaves.others.assign(mixed + others, 0);
+    m_mixed_end = 0;
+    m_others_end = static_cast<std::uint32_t>(mixed);
+  }
+
   static WideBvhNode<W> empty_node() {
     WideBvhNode<W> n{};
     for (int a = 0; a < 3; ++a) {
@@ -45,29 +98,43 @@ class WideCollapser {
     return n;
   }
 
-  // Packs the references of binary leaf `b` into blocks; returns the block count and flag.
-  std::uint32_t pack_leaf(const BvhNode& b, std::uint32_t& first_block) {
-    auto& blocks = m_out.leaves.blocks;
-    first_block = static_cast<std::uint32_t>(blocks.size());
-    const std::uint32_t tri_count = m_out.leaves.triangle_count;
-    bool others = false;
+  // Stores the references of binary leaf `b` (triangles into blocks, the rest into `others`);
+  // returns the `child` and `count` of its slot.
+  std::pair<std::uint32_t, std::uint32_t> pack_leaf(const BvhNode& b) {
+    WideBvhLeaves& leaves = m_out.leaves;
+    const LeafSplit split = split_of(b);
+    const auto first_block = static_cast<std::uint32_t>(leaves.blocks.size());
+    std::uint32_t* ids = nullptr;  // where this leaf's other ids go
+    std::pair<std::uint32_t, std::uint32_t> slot{first_block, split.blocks()};
+    if (split.mixed()) {
+      leaves.others[m_mixed_end] = split.other_ids;  // the header
+      slot.second |= WideBvhLeaves::kHasOthers | m_mixed_end << WideBvhLeaves::kBlockBits;
+      ids = &leaves.others[m_mixed_end + 1];
+      m_mixed_end += 1 + split.other_ids;
+    } else if (split.other_ids != 0) {
+      if (split.other_ids > WideBvhLeaves::kMaxOthersField) {
+        throw std::length_error("wide BVH: a leaf with too many primitives");
+      }
+      slot = {m_others_end, WideBvhLeaves::kHasOthers | split.other_ids << WideBvhLeaves::kBlockBits};
+      ids = &leaves.others[m_others_end];
+      m_others_end += split.other_ids;
+    }
+    std::uint32_t lane = 0;
     for (std::uint32_t i = 0; i < b.count; ++i) {
-      if (i % 4 == 0) blocks.push_back(empty_triangle_block());
       const std::uint32_t id = m_tree.prim_ids[b.first + i];
-      TriangleBlock4& block = blocks.back();
-      if (id < tri_count) {
-        block.set(static_cast<int>(i % 4), m_geometry.triangles[id], id);
+      if (is_triangle(id) && lane < split.block_triangles) {
+        if (lane % 4 == 0) leaves.blocks.push_back(empty_triangle_block());
+        leaves.blocks.back().set(static_cast<int>(lane % 4), m_geometry.triangles[id], id);
+        ++lane;
       } else {
-        block.id[i % 4] = id;  // tested through the Geometry; its lane keeps degenerate vertices
-        others = true;
+        *ids++ = id;  // tested through the Geometry
       }
     }
-    const auto count = static_cast<std::uint32_t>(blocks.size()) - first_block;
-    return count | (others ? WideBvhNode<W>::kLeafHasOthers : 0u);
+    return slot;
   }
 
   // Puts binary node `binary_index` into slot `slot` of wide node `wide`: its box and, for a
-  // leaf, its blocks (an interior child's index is filled in by the caller).
+  // leaf, its content (an interior child's index is filled in by the caller).
   void place(std::size_t wide, int slot, std::uint32_t binary_index, int depth) {
     const BvhNode& b = m_tree.nodes[binary_index];
     for (int a = 0; a < 3; ++a) {
@@ -75,9 +142,8 @@ class WideCollapser {
       m_out.nodes[wide].hi[a][slot] = b.hi[a];
     }
     if (b.is_leaf()) {
-      std::uint32_t first = 0;
-      const std::uint32_t count = pack_leaf(b, first);
-      m_out.nodes[wide].child[slot] = first;
+      const auto [child, count] = pack_leaf(b);
+      m_out.nodes[wide].child[slot] = child;
       m_out.nodes[wide].count[slot] = count;
       ++m_out.leaf_count;
       m_out.max_depth = std::max(m_out.max_depth, depth);
@@ -121,6 +187,8 @@ class WideCollapser {
   const BvhTree& m_tree;
   const Geometry& m_geometry;
   WideBvhTree<W> m_out;
+  std::uint32_t m_mixed_end = 0;   // end of the `others` written by leaves holding both kinds
+  std::uint32_t m_others_end = 0;  // end of the `others` written by leaves holding others only
 };
 
 }  // namespace

@@ -12,10 +12,11 @@
 namespace raylab {
 
 /// The number of triangle blocks of a leaf whose node slot holds `count_flags`: the leaf's
-/// triangles are the blocks [first, first + this), lanes with ids >= triangle_count excepted.
+/// triangles are the blocks [first, first + this), unused lanes (kNoPrimitive) excepted. When
+/// it is 0, `first` is no block index (the leaf's ids are elsewhere).
 template <int W>
 inline std::uint32_t leaf_block_count(std::uint32_t count_flags) {
-  return count_flags & ~WideBvhNode<W>::kLeafHasOthers;
+  return WideBvhLeaves::block_count(count_flags);
 }
 
 /// Whether the leaf holds primitives other than triangles (tested by intersect_wide_leaf_others).
@@ -24,27 +25,21 @@ inline bool leaf_has_others(std::uint32_t count_flags) {
   return (count_flags & WideBvhNode<W>::kLeafHasOthers) != 0;
 }
 
-/// Tests the non-triangle primitives of a leaf (`first` and `count_flags` as stored in its node
-/// slot) against `ray` restricted to [tmin, tmax); on a hit shrinks `tmax` and updates `best`
-/// (closest hit, lower id on ties). With kAnyHit, returns at the first hit. Counts the
-/// primitives tested in `prim_tests` when kCount.
+/// Tests the primitives of a leaf listed by id, not in its triangle blocks (`first` and
+/// `count_flags` as stored in its node slot), against `ray` restricted to [tmin, tmax); on a hit
+/// shrinks `tmax` and updates `best` (closest hit, lower id on ties). With kAnyHit, returns at
+/// the first hit. Counts the primitives tested in `prim_tests` when kCount.
 template <bool kAnyHit, bool kCount, int W>
 inline bool intersect_wide_leaf_others(const WideBvhLeaves& leaves, const Geometry& geometry, std::uint32_t first,
                                        std::uint32_t count_flags, const WatertightRay& tri_ray, const Ray& ray,
                                        float tmin, float& tmax, Hit& best, std::uint64_t& prim_tests) {
   if (!leaf_has_others<W>(count_flags)) return false;
-  const std::uint32_t triangle_count = leaves.triangle_count;
   bool found = false;
-  for (std::uint32_t b = first; b < first + leaf_block_count<W>(count_flags); ++b) {
-    const TriangleBlock4& block = leaves.blocks[b];
-    for (int i = 0; i < 4; ++i) {
-      const std::uint32_t id = block.id[i];
-      if (id < triangle_count || id == TriangleBlock4::kNoPrimitive) continue;
-      if constexpr (kCount) ++prim_tests;
-      if (intersect_other<kAnyHit>(geometry, id, tri_ray, ray, tmin, tmax, best)) {
-        found = true;
-        if constexpr (kAnyHit) return true;
-      }
+  for (const std::uint32_t id : leaves.others_of(first, count_flags)) {
+    if constexpr (kCount) ++prim_tests;
+    if (intersect_other<kAnyHit>(geometry, id, tri_ray, ray, tmin, tmax, best)) {
+      found = true;
+      if constexpr (kAnyHit) return true;
     }
   }
   return found;

@@ -1,8 +1,9 @@
 // The wide BVH at every width (4, 8, 16). Its structure: collapse_to_wide keeps every leaf and
 // every box of the binary tree, each wide node takes binary nodes 1 to W - 1 levels below the
-// one it came from, empty slots are +-inf boxes no ray enters, leaves are packed four references
-// to a block with unused lanes marked, every primitive is referenced exactly once, the "others"
-// flag is set exactly when a leaf holds a non-triangle, and info() describes what it holds. Its
+// one it came from, empty slots are +-inf boxes no ray enters, leaves pack their triangles four
+// to a block with unused lanes marked and list the other kinds by id (spheres only, leaves
+// holding both kinds, leaves listing many), every primitive is referenced exactly once, the
+// "others" flag is set exactly when a leaf lists ids, and info() describes what it holds. Its
 // answers: bit for bit those of the binary Bvh and of BruteForce (t, prim_id, u, v, ray.tmax),
 // any-hit equal to brute force, counted equal to uncounted, packets of 1 to 40 rays equal to
 // single rays; empty, single and coincident geometry; rays with NaN, infinite or zero
@@ -82,25 +83,47 @@ bool box_contains(const WideBvhNode<W>& n, int i, const Box3& box) {
   return true;
 }
 
-// The ids of a leaf slot's blocks, in block and lane order, and whether they are well formed:
-// used lanes first, only the last block partly filled, unused lanes kNoPrimitive with all
-// vertices zero, triangle lanes holding the triangle bit for bit, other lanes degenerate.
+// Which leaf owns each block and each entry of `others`, and where the entries of the leaves
+// holding both triangles and other kinds end (they come first in `others`).
+struct LeafOwners {
+  std::vector<int> block, other;
+  std::size_t mixed_end = 0, pure_start = std::numeric_limits<std::size_t>::max();
+};
+
+// Marks entries [first, first + count) of `owner` as `leaf`'s; false (with a failure) if out of range.
+bool claim(std::vector<int>& owner, std::size_t first, std::size_t count, int leaf, const char* what) {
+  EXPECT_LE(first + count, owner.size()) << what << " out of range";
+  if (first + count > owner.size()) return false;
+  for (std::size_t k = first; k < first + count; ++k) {
+    EXPECT_EQ(owner[k], -1) << what << " " << k << " belongs to two leaves";
+    owner[k] = leaf;
+  }
+  return true;
+}
+
+// The ids of a leaf slot, its blocks' lanes then its listed ids, and whether they are well
+// formed: used lanes first, only the last block partly filled, unused lanes kNoPrimitive with all
+// vertices zero, lanes holding only triangles, bit for bit; kLeafHasOthers set exactly when the
+// leaf lists ids, which are other kinds or, in a leaf holding both whose blocks are all full, the
+// triangles beyond them; the encoding of WideBvhLeaves.
 template <int W>
 std::vector<std::uint32_t> leaf_ids(const Geometry& g, const WideBvhTree<W>& wide, const WideBvhNode<W>& n, int i,
-                                    std::vector<int>& block_owner, int owner) {
+                                    LeafOwners& owners, int owner) {
   std::vector<std::uint32_t> ids;
-  const std::uint32_t count = n.count[i] & ~WideBvhNode<W>::kLeafHasOthers;
+  const WideBvhLeaves& leaves = wide.leaves;
+  const std::uint32_t count = WideBvhLeaves::block_count(n.count[i]);
   const std::uint32_t first = n.child[i];
-  EXPECT_GE(count, 1u);
-  EXPECT_LE(std::uint64_t(first) + count, wide.leaves.blocks.size()) << "leaf blocks out of range";
-  if (std::uint64_t(first) + count > wide.leaves.blocks.size()) return ids;
+  const bool flagged = (n.count[i] & WideBvhNode<W>::kLeafHasOthers) != 0;
   const auto triangle_count = static_cast<std::uint32_t>(g.triangles.size());
-  EXPECT_EQ(wide.leaves.triangle_count, triangle_count);
-  bool others = false;
+  EXPECT_EQ(leaves.triangle_count, triangle_count);
+  if (!flagged) {
+    EXPECT_GE(count, 1u) << "a leaf with nothing in it";
+  } else {
+    EXPECT_LE(count, WideBvhLeaves::kMaxMixedBlocks);
+  }
+  if (count != 0 && !claim(owners.block, first, count, owner, "block")) return ids;
   for (std::uint32_t b = first; b < first + count; ++b) {
-    EXPECT_EQ(block_owner[b], -1) << "block " << b << " belongs to two leaves";
-    block_owner[b] = owner;
-    const TriangleBlock4& block = wide.leaves.blocks[b];
+    const TriangleBlock4& block = leaves.blocks[b];
     bool seen_unused = false;
     for (int lane = 0; lane < 4; ++lane) {
       const std::uint32_t id = block.id[lane];
@@ -112,23 +135,47 @@ std::vector<std::uint32_t> leaf_ids(const Geometry& g, const WideBvhTree<W>& wid
         continue;
       }
       EXPECT_FALSE(seen_unused) << "block " << b << ": a used lane after an unused one";
-      EXPECT_LT(id, g.size());
+      EXPECT_LT(id, triangle_count) << "block " << b << " lane " << lane << ": not a triangle";
+      if (id >= triangle_count) continue;
       ids.push_back(id);
-      if (id < triangle_count) {
-        const Triangle t = block.triangle(lane);
-        EXPECT_EQ(std::memcmp(&t, &g.triangles[id], sizeof(Triangle)), 0) << "block " << b << " lane " << lane;
-      } else {
-        others = true;
-        // Not a triangle: the lane's vertices must be degenerate so that the SIMD test ignores it.
-        const Triangle t = block.triangle(lane);
-        EXPECT_TRUE(t.p0 == t.p1 && t.p1 == t.p2) << "block " << b << " lane " << lane;
-      }
+      const Triangle t = block.triangle(lane);
+      EXPECT_EQ(std::memcmp(&t, &g.triangles[id], sizeof(Triangle)), 0) << "block " << b << " lane " << lane;
     }
   }
   EXPECT_EQ(count, (ids.size() + 3) / 4) << "a leaf with a wasted block";
-  EXPECT_EQ((n.count[i] & WideBvhNode<W>::kLeafHasOthers) != 0, others)
-      << "kLeafHasOthers must be set exactly when the leaf holds non-triangles";
+  const std::span<const std::uint32_t> listed = leaves.others_of(first, n.count[i]);
+  EXPECT_EQ(flagged, !listed.empty()) << "kLeafHasOthers must be set exactly when the leaf lists ids";
+  if (!flagged) return ids;
+  const auto start = static_cast<std::size_t>(listed.data() - leaves.others.data());
+  if (count != 0) {  // a header, then the ids; these leaves first
+    EXPECT_GE(start, 1u);
+    if (!claim(owners.other, start - 1, listed.size() + 1, owner, "header or id")) return ids;
+    owners.mixed_end = std::max(owners.mixed_end, start + listed.size());
+  } else {
+    if (!claim(owners.other, start, listed.size(), owner, "id")) return ids;
+    owners.pure_start = std::min(owners.pure_start, start);
+  }
+  for (const std::uint32_t id : listed) {
+    EXPECT_LT(id, g.size());
+    if (id < triangle_count) {
+      EXPECT_EQ(ids.size(), WideBvhLeaves::kMaxMixedBlocks * 4) << "a triangle listed while the blocks have room";
+    }
+  }
+  ids.insert(ids.end(), listed.begin(), listed.end());
   return ids;
+}
+
+// The order in which a wide leaf holds a binary leaf's references: the triangles in the blocks
+// (at most kMaxMixedBlocks blocks' worth when the leaf holds other kinds), then the rest.
+std::vector<std::uint32_t> wide_leaf_order(const Geometry& g, const BvhTree& tree, const BvhNode& b) {
+  const auto triangle_count = static_cast<std::uint32_t>(g.triangles.size());
+  const auto refs = std::span(tree.prim_ids).subspan(b.first, b.count);
+  const bool others = std::any_of(refs.begin(), refs.end(), [&](std::uint32_t id) { return id >= triangle_count; });
+  const std::size_t room = others ? WideBvhLeaves::kMaxMixedBlocks * 4 : refs.size();
+  std::vector<std::uint32_t> blocks, listed;
+  for (const std::uint32_t id : refs) (id < triangle_count && blocks.size() < room ? blocks : listed).push_back(id);
+  blocks.insert(blocks.end(), listed.begin(), listed.end());
+  return blocks;
 }
 
 // A subtree as (its first binary leaf, number of binary leaves); binary leaves are numbered in
@@ -149,6 +196,8 @@ void check_collapse(const Geometry& g, const BvhTree& tree, const WideBvhTree<W>
     ASSERT_EQ(wn, 1u);
     for (int i = 0; i < W; ++i) EXPECT_TRUE(is_empty_sentinel(wide.nodes[0], i)) << "slot " << i;
     EXPECT_TRUE(wide.leaves.blocks.empty());
+    EXPECT_TRUE(wide.leaves.others.empty());
+    EXPECT_TRUE(wide.leaves.empty());
     EXPECT_EQ(wide.leaf_count, 0u);
     return;
   }
@@ -158,12 +207,12 @@ void check_collapse(const Geometry& g, const BvhTree& tree, const WideBvhTree<W>
   std::vector<Key> bkey(bn);
   std::vector<std::uint32_t> bparent(bn, bn), leaf_number(bn, bn);
   std::map<Key, std::uint32_t> binary_of;
-  std::map<std::uint32_t, std::uint32_t> leaf_of_first_id;  // first reference's id -> binary leaf
+  std::map<std::uint32_t, std::uint32_t> leaf_of_first_id;  // first id in wide leaf order -> binary leaf
   std::uint32_t leaves = 0;
   for (std::uint32_t i = 0; i < bn; ++i) {
     if (tree.nodes[i].is_leaf()) {
       leaf_number[i] = leaves++;
-      leaf_of_first_id[tree.prim_ids[tree.nodes[i].first]] = i;
+      leaf_of_first_id[wide_leaf_order(g, tree, tree.nodes[i])[0]] = i;
     }
   }
   for (std::uint32_t i = bn; i-- > 0;) {
@@ -180,7 +229,8 @@ void check_collapse(const Geometry& g, const BvhTree& tree, const WideBvhTree<W>
   }
 
   // Wide slots: kinds, sentinels, indices, each node reached once, leaves well formed.
-  std::vector<int> reached(wn, 0), block_owner(wide.leaves.blocks.size(), -1);
+  std::vector<int> reached(wn, 0);
+  LeafOwners owners{std::vector<int>(wide.leaves.blocks.size(), -1), std::vector<int>(wide.leaves.others.size(), -1)};
   std::vector<int> ref_count(g.size(), 0);
   std::vector<std::vector<std::uint32_t>> slot_ids(std::size_t(wn) * W);
   std::size_t leaf_slots = 0;
@@ -194,7 +244,7 @@ void check_collapse(const Geometry& g, const BvhTree& tree, const WideBvhTree<W>
           break;
         case Slot::kLeaf: {
           ++used, ++leaf_slots;
-          slot_ids[std::size_t(w) * W + std::size_t(i)] = leaf_ids(g, wide, n, i, block_owner, int(w * W + i));
+          slot_ids[std::size_t(w) * W + std::size_t(i)] = leaf_ids(g, wide, n, i, owners, int(w * W + i));
           std::vector<std::uint32_t> sorted = slot_ids[std::size_t(w) * W + std::size_t(i)];
           std::sort(sorted.begin(), sorted.end());
           EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << "a leaf lists a primitive twice";
@@ -228,7 +278,10 @@ void check_collapse(const Geometry& g, const BvhTree& tree, const WideBvhTree<W>
   for (std::uint32_t w = 1; w < wn; ++w) EXPECT_EQ(reached[w], 1) << "node " << w << " reached that often";
   EXPECT_EQ(leaf_slots, tree.leaf_count);
   EXPECT_EQ(wide.leaf_count, tree.leaf_count);
-  for (std::size_t b = 0; b < block_owner.size(); ++b) EXPECT_NE(block_owner[b], -1) << "block " << b << " unused";
+  for (std::size_t b = 0; b < owners.block.size(); ++b) EXPECT_NE(owners.block[b], -1) << "block " << b << " unused";
+  for (std::size_t k = 0; k < owners.other.size(); ++k) EXPECT_NE(owners.other[k], -1) << "others " << k << " unused";
+  EXPECT_LE(owners.mixed_end, owners.pure_start) << "leaves holding both kinds list their ids first";
+  EXPECT_FALSE(wide.leaves.empty());
   // Without spatial splits, every primitive built over is referenced exactly once.
   std::vector<int> expected_refs(g.size(), 0);
   for (std::uint32_t id : tree.prim_ids) ++expected_refs[id];
@@ -264,9 +317,8 @@ void check_collapse(const Geometry& g, const BvhTree& tree, const WideBvhTree<W>
         const auto it = leaf_of_first_id.find(ids[0]);
         ASSERT_NE(it, leaf_of_first_id.end()) << "node " << w << " slot " << i << " starts no binary leaf";
         const BvhNode& b = tree.nodes[it->second];
-        const std::vector<std::uint32_t> expected(tree.prim_ids.begin() + b.first,
-                                                  tree.prim_ids.begin() + b.first + b.count);
-        EXPECT_EQ(ids, expected) << "node " << w << " slot " << i << ": not the binary leaf's references in order";
+        EXPECT_EQ(ids, wide_leaf_order(g, tree, b))
+            << "node " << w << " slot " << i << ": not the binary leaf's references in order";
         leaf_key[std::size_t(w) * W + std::size_t(i)] = bkey[it->second];
         wkey[w] = combine(wkey[w], bkey[it->second]);
       }
@@ -413,13 +465,15 @@ void check_accelerator(const Geometry& g, const BvhConfig& config, const BvhTree
   EXPECT_EQ(std::memcmp(held.leaves.blocks.data(), wide.leaves.blocks.data(),
                         wide.leaves.blocks.size() * sizeof(TriangleBlock4)),
             0);
+  EXPECT_EQ(held.leaves.others, wide.leaves.others);
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(held.nodes.data()) % 64, 0u) << "nodes not cache-line aligned";
   const AccelInfo info = accel.info();
   EXPECT_EQ(info.name, W == simd::kNativeBoxWidth ? std::string("bvh") : "bvh" + std::to_string(W));
   EXPECT_EQ(info.node_count, wide.nodes.size());
   EXPECT_EQ(info.leaf_count, tree.leaf_count);
   EXPECT_EQ(info.primitive_count, tree.prim_ids.size());
-  EXPECT_EQ(info.memory_bytes, info.node_count * W * 32 + wide.leaves.blocks.size() * 160);
+  EXPECT_EQ(info.memory_bytes,
+            info.node_count * W * 32 + wide.leaves.blocks.size() * 160 + wide.leaves.others.size() * 4);
   EXPECT_EQ(info.max_depth, wide.max_depth);
   EXPECT_GE(info.build_seconds, 0.0);
   if (!tree.prim_ids.empty()) {
@@ -817,6 +871,114 @@ TYPED_TEST(WideBvhTest, DegenerateGeometry) {
         for (std::uint8_t o : occ) EXPECT_EQ(o, 0);
       }
       check_packets(accel, packet_rays(g.size() > 0 ? g : degenerate(2), accel, s, 200), names[which]);
+    }
+  }
+}
+
+// Scenes for the leaf layout: spheres only (leaves list ids, no blocks at all); triangles with a
+// sphere around each (leaves holding both kinds); a pile of coincident spheres that no split
+// separates (a leaf listing many ids); a pile of coincident triangles and spheres (a leaf holding
+// both, with more triangles than kMaxMixedBlocks blocks take), each pile among scattered shapes.
+Geometry leaf_layout_scene(int which) {
+  Sampler s(400 + std::uint64_t(which));
+  Geometry g;
+  // The same centroid, (0, 0, 5), whether a builder takes the box centre or the vertex mean.
+  const Triangle pile_triangle{{-1.f, -1.f, 5.f}, {1.f, 0.f, 5.f}, {0.f, 1.f, 5.f}};
+  const Sphere pile_sphere{{0.f, 0.f, 5.f}, 0.5f};
+  switch (which) {
+    case 0:
+      for (int i = 0; i < 600; ++i) g.add(Sphere{s.in_box(Vec3(-10.f), Vec3(10.f)), s.uni(0.05f, 1.5f)}, 0);
+      break;
+    case 1:
+      for (int i = 0; i < 400; ++i) {
+        const Vec3 c = s.in_box(Vec3(-10.f), Vec3(10.f));
+        g.add(random_triangle(s, c, 0.4f), 0);
+        g.add(Sphere{c + s.unit() * 0.1f, 0.15f}, 1);
+      }
+      break;
+    case 2:
+      for (int i = 0; i < 100; ++i) g.add(pile_sphere, 0);
+      for (int i = 0; i < 60; ++i) g.add(Sphere{s.in_box(Vec3(-10.f), Vec3(10.f)), s.uni(0.1f, 1.f)}, 1);
+      break;
+    default:
+      for (int i = 0; i < 70; ++i) g.add(pile_triangle, 0);
+      for (int i = 0; i < 30; ++i) g.add(pile_sphere, 1);
+      for (int i = 0; i < 60; ++i) g.add(random_triangle(s, s.in_box(Vec3(-10.f), Vec3(10.f)), 0.5f), 2);
+      for (int i = 0; i < 20; ++i) g.add(Sphere{s.in_box(Vec3(-10.f), Vec3(10.f)), s.uni(0.1f, 1.f)}, 3);
+      break;
+  }
+  return g;
+}
+
+// What the leaves of a tree look like: the most ids a leaf without blocks lists, the number of
+// leaves holding both kinds, and whether one of them lists triangles.
+struct LeafShapes {
+  std::size_t most_listed = 0, mixed = 0;
+  bool triangles_listed = false;
+};
+
+template <int W>
+LeafShapes leaf_shapes(const WideBvhTree<W>& wide) {
+  LeafShapes shapes;
+  for (const WideBvhNode<W>& n : wide.nodes) {
+    for (int i = 0; i < W; ++i) {
+      if (n.count[i] == 0) continue;
+      const std::span<const std::uint32_t> listed = wide.leaves.others_of(n.child[i], n.count[i]);
+      if (WideBvhLeaves::block_count(n.count[i]) == 0) {
+        shapes.most_listed = std::max(shapes.most_listed, listed.size());
+      } else if (!listed.empty()) {
+        ++shapes.mixed;
+        for (const std::uint32_t id : listed) shapes.triangles_listed |= id < wide.leaves.triangle_count;
+      }
+    }
+  }
+  return shapes;
+}
+
+TYPED_TEST(WideBvhTest, LeavesListingOtherKinds) {
+  constexpr int W = TypeParam::value;
+  const char* names[] = {"spheres only", "a sphere around each triangle", "coincident spheres",
+                         "coincident triangles and spheres"};
+  // The default build, and one that keeps the coincident piles in one leaf.
+  for (const BvhConfig config : {BvhConfig{}, BvhConfig{16, 256, 1.f, 1.f, 4096}}) {
+    for (int which = 0; which < 4; ++which) {
+      SCOPED_TRACE(std::string(names[which]) + ", max_leaf_size " + std::to_string(config.max_leaf_size));
+      const Geometry g = leaf_layout_scene(which);
+      check_all<W>(g, config, 500 + std::uint64_t(which), 400);
+      if (::testing::Test::HasFailure()) return;
+      const WideBvh<W> accel(g, config);
+      const WideBvhTree<W>& wide = accel.tree();
+      const LeafShapes shapes = leaf_shapes(wide);
+      if (which == 0) {
+        EXPECT_TRUE(wide.leaves.blocks.empty());
+        EXPECT_EQ(wide.leaves.others.size(), g.size()) << "spheres only: one id each, no headers";
+        EXPECT_EQ(accel.info().memory_bytes, wide.nodes.size() * sizeof(WideBvhNode<W>) + g.size() * 4);
+      }
+      if (which == 1) {
+        EXPECT_GT(shapes.mixed, 0u) << "no leaf holds both kinds";
+      }
+      if (which == 2 && config.max_leaf_size == 256) {
+        EXPECT_GE(shapes.most_listed, 100u) << "the pile is not one leaf";
+      }
+      if (which == 3 && config.max_leaf_size == 256) {
+        EXPECT_TRUE(shapes.triangles_listed) << "no leaf lists the triangles its blocks cannot take";
+      }
+      // Answers: as the binary tree and brute force, bit for bit, single rays and packets; the
+      // rays start near the origin and cross the piles.
+      const Bvh binary(g, config);
+      const BruteForce brute(g);
+      Sampler s(600 + std::uint64_t(which));
+      std::vector<Ray> rays = awkward_rays(g, s, 400, false);
+      for (int i = 0; i < 200; ++i) {
+        const Vec3 o = s.in_box(Vec3(-0.5f), Vec3(0.5f));
+        rays.push_back(Ray{o, 0.f, s.in_box(Vec3(-1.5f, -1.5f, 4.f), Vec3(1.5f, 1.5f, 6.f)) - o});
+      }
+      int hits = 0;
+      compare_bitwise(accel, binary, rays, "vs binary BVH", s, &hits);
+      compare_bitwise(accel, brute, rays, "vs brute force", s);
+      EXPECT_GT(hits, 100);
+      check_packets(accel, packet_rays(g, accel, s, 300), names[which]);
+      if (::testing::Test::HasFailure()) return;
     }
   }
 }

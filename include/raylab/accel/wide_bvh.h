@@ -2,8 +2,8 @@
 /// \file
 /// The wide BVH ("bvh"): the binned SAH tree collapsed to W-wide nodes (W = 4, 8 or 16) whose
 /// children's boxes one SIMD instruction per plane tests together, with leaves of triangles stored
-/// four to a block and tested with SIMD. Single-ray traversal is ordered by the ray's octant and
-/// by distance; packets of rays share the walk (wide_bvh_packet.cpp).
+/// four to a block and tested with SIMD, other primitives listed by id. Single-ray traversal is ordered by the ray's
+/// octant and by distance; packets of rays share the walk (wide_bvh_packet.cpp).
 
 #include <cstdint>
 #include <span>
@@ -17,31 +17,71 @@
 
 namespace raylab {
 
+/// The leaves' content of a wide BVH. A leaf's triangles are packed four to a TriangleBlock4 in
+/// `blocks`; its other primitives (spheres, cylinders, disks, quads, groups: tested one by one
+/// through the Geometry) are listed by id in `others`, 4 bytes each, instead of taking a 40-byte
+/// lane of a block each.
+///
+/// A leaf's node slot (`child`, `count`) says where its content is, in one of three forms:
+///   triangles only   child = its first block, count = its number of blocks (kHasOthers clear):
+///                    the triangle path needs nothing more, as if there were no other kinds;
+///   others only      child = where its ids start in `others`,
+///                    count = kHasOthers | number of ids << kBlockBits (no blocks);
+///   both             child = its first block,
+///                    count = kHasOthers | start << kBlockBits | number of blocks (1 to
+///                    kMaxMixedBlocks), where others[start] is the number of ids, which follow it.
+/// A leaf with both kinds is rare (triangles and spheres side by side), so it alone pays the
+/// 4-byte header; it keeps at most kMaxMixedBlocks blocks and lists any further triangles with
+/// its others. The headers of all such leaves come first in `others`, so that their starts stay
+/// small whatever the number of leaves holding only others.
+struct WideBvhLeaves {
+  /// Flag in a leaf's `count`: the leaf holds primitives other than triangles.
+  static constexpr std::uint32_t kHasOthers = 0x80000000u;
+  /// Bits of `count` holding the number of blocks of a leaf that also holds others.
+  static constexpr int kBlockBits = 4;
+  /// The most blocks a leaf holding others keeps.
+  static constexpr std::uint32_t kMaxMixedBlocks = (1u << kBlockBits) - 1;
+  /// The largest value of the field above the block bits (a start or a number of ids).
+  static constexpr std::uint32_t kMaxOthersField = (kHasOthers >> kBlockBits) - 1;
+
+  std::vector<TriangleBlock4> blocks;  ///< triangles, leaf after leaf
+  std::vector<std::uint32_t> others;   ///< ids of the other kinds (and headers), see above
+  std::uint32_t triangle_count = 0;    ///< primitive ids below this are triangles
+
+  /// Whether no leaf holds anything (no ray can hit).
+  bool empty() const { return blocks.empty() && others.empty(); }
+
+  /// The number of blocks of a leaf whose slot's count is `count`.
+  static std::uint32_t block_count(std::uint32_t count) {
+    return (count & kHasOthers) != 0 ? count & kMaxMixedBlocks : count;
+  }
+
+  /// The ids of the other primitives of a leaf whose slot holds `child` and `count` (none when
+  /// the leaf holds triangles only).
+  std::span<const std::uint32_t> others_of(std::uint32_t child, std::uint32_t count) const {
+    if ((count & kHasOthers) == 0) return {};
+    const std::uint32_t field = (count & ~kHasOthers) >> kBlockBits;
+    if ((count & kMaxMixedBlocks) == 0) return {others.data() + child, field};
+    return {others.data() + field + 1, others[field]};
+  }
+};
+
 /// One W-wide node, boxes as structure of arrays (W = 8: 256 bytes, four cache lines):
 ///   lo[axis][slot], hi[axis][slot]  the children's boxes
-///   child[slot]   an interior child's node index, or a leaf's first TriangleBlock4
-///   count[slot]   0 for an interior child or an empty slot; for a leaf, its number of blocks,
-///                 with kLeafHasOthers set when some lanes hold non-triangle primitives
+///   child[slot]   an interior child's node index, or where a leaf's content starts
+///   count[slot]   0 for an interior child or an empty slot; for a leaf never 0: its number of
+///                 blocks, with kLeafHasOthers set when it holds non-triangle primitives (the
+///                 encoding is WideBvhLeaves')
 /// An empty slot has an empty box (lo = +inf, hi = -inf), which no ray enters.
 template <int W>
 struct alignas(64) WideBvhNode {
   /// Flag in `count`: the leaf holds primitives other than triangles (tested one by one).
-  static constexpr std::uint32_t kLeafHasOthers = 0x80000000u;
+  static constexpr std::uint32_t kLeafHasOthers = WideBvhLeaves::kHasOthers;
 
   float lo[3][W];
   float hi[3][W];
   std::uint32_t child[W];
   std::uint32_t count[W];
-};
-
-/// The leaves' content of a wide BVH: blocks of four triangles (or other primitives, whose lanes
-/// hold no vertices), leaf after leaf.
-struct WideBvhLeaves {
-  std::vector<TriangleBlock4> blocks;
-  std::uint32_t triangle_count = 0;  ///< primitive ids below this are triangles
-
-  /// Whether no leaf holds anything (no ray can hit).
-  bool empty() const { return blocks.empty(); }
 };
 
 /// A wide tree as plain data.
@@ -55,7 +95,9 @@ struct WideBvhTree {
 
 /// Collapses a binary tree into W-wide nodes: each wide node takes a binary interior node's two
 /// children and keeps opening the child of largest surface area until it has W. Each binary
-/// leaf becomes a wide leaf whose primitives are packed four to a block, in leaf order.
+/// leaf becomes a wide leaf whose triangles are packed four to a block and whose other
+/// primitives are listed by id, each in leaf order. Throws std::length_error should a leaf's
+/// encoding overflow (more than 2^27 ids listed by the leaves holding both kinds).
 template <int W>
 WideBvhTree<W> collapse_to_wide(const BvhTree& tree, const Geometry& geometry);
 
