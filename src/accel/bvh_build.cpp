@@ -4,10 +4,11 @@
 // Where the time goes and why it is laid out so: one 32-byte reference per primitive, sorted in
 // place (no index indirection, no copies); one pass bins all three axes at once with 4-wide
 // min/max; the children's boxes come from the bins and their centroid bounds from the partition
-// pass, so no node rescans its references. Large nodes bin in parallel; subtrees above
-// `parallel_threshold` are tasks. The tree is the same whatever the thread count: a node's split
-// depends only on its references, merging bins is exact (min, max, integer sums), the partition is
-// sequential, and the final depth-first relayout removes the order in which tasks took node slots.
+// pass, so no node rescans its references. Large nodes bin and partition in parallel; subtrees
+// above `parallel_threshold` are tasks. The tree is the same whatever the thread count: a node's
+// split depends only on its references, merging bins is exact (min, max, integer sums), the
+// parallel partition cuts its work into chunks of a constant size (bvh_build_partition.h), and
+// the final depth-first relayout removes the order in which tasks took node slots.
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -19,6 +20,8 @@
 #include <cmath>
 #include <memory>
 
+#include "bvh_build_box.h"
+#include "bvh_build_partition.h"
 #include "bvh_build_ref.h"
 #include "raylab/accel/bvh.h"
 #include "raylab/simd/float4.h"
@@ -26,9 +29,12 @@
 namespace raylab {
 namespace {
 
+using bvh_build::Box4;
 using bvh_build::BuildRef;
 using bvh_build::CostModel;
 using bvh_build::kMaxBins;
+using bvh_build::load_hi;
+using bvh_build::load_lo;
 using simd::Float4;
 
 // Beyond this depth splits fall back to the object median, which halves the count each level:
@@ -38,37 +44,8 @@ constexpr int kMedianFallbackDepth = 64;
 // Nodes with at least this many references bin in parallel (the bins merge exactly, so the
 // result does not depend on how the range was cut).
 constexpr std::uint32_t kParallelBinning = 16384;
-
-Float4 load_lo(const BuildRef& r) { return Float4::load(r.lo); }
-Float4 load_hi(const BuildRef& r) { return Float4::load(r.hi); }
-
-// A box as two 4-wide vectors (the fourth lane is ignored), 32 bytes.
-struct Box4 {
-  Float4 lo = Float4::broadcast(INFINITY);
-  Float4 hi = Float4::broadcast(-INFINITY);
-
-  void extend(Float4 l, Float4 h) {
-    lo = min(l, lo);
-    hi = max(h, hi);
-  }
-  void extend(const Box4& b) { extend(b.lo, b.hi); }
-  Box3 box3() const {
-    float l[4], h[4];
-    lo.store(l);
-    hi.store(h);
-    return {{l[0], l[1], l[2]}, {h[0], h[1], h[2]}};
-  }
-};
-
-// Surface area of a 4-wide box; 0 when empty.
-float area(const Box4& b) {
-  float l[4], h[4];
-  b.lo.store(l);
-  b.hi.store(h);
-  const float ex = h[0] - l[0], ey = h[1] - l[1], ez = h[2] - l[2];
-  if (!(ex >= 0.f && ey >= 0.f && ez >= 0.f)) return 0.f;
-  return 2.f * (ex * ey + ey * ez + ez * ex);
-}
+// Nodes with at least this many references partition in parallel (bvh_build_partition.h).
+constexpr std::uint32_t kParallelPartition = 4 * bvh_build::kPartitionChunk;
 
 // Bounds of a node's references and of their doubled centroids.
 struct Bounds {
@@ -94,6 +71,7 @@ Bounds bounds_of(const BuildRef* refs, std::uint32_t n) {
 struct BinMap {
   float lo[4] = {0.f, 0.f, 0.f, 0.f};
   float scale[4] = {0.f, 0.f, 0.f, 0.f};  // 0 on an axis whose centroids coincide: one bin
+  float hi[4] = {0.f, 0.f, 0.f, 0.f};     // the largest doubled centroid
   int bins = 2;
 
   BinMap(const Box4& centroids, int bin_count) : bins(bin_count) {
@@ -102,6 +80,7 @@ struct BinMap {
     centroids.hi.store(h);
     for (int a = 0; a < 3; ++a) {
       lo[a] = l[a];
+      hi[a] = h[a];
       const float s = static_cast<float>(bins) / (h[a] - l[a]);
       scale[a] = std::isfinite(s) && s > 0.f ? s : 0.f;
     }
@@ -141,19 +120,24 @@ struct BinSet {
       }
   }
 
-  void add_one(const BuildRef& r, Float4 lo4, Float4 scale4) {
+  // The bin index is clamped as a float, before the conversion: for the references of the node
+  // the scaled centroid lies in [0, bins] (the map comes from their own centroid bounds), where
+  // this gives what clamping the converted integer gives, at the cost of two vector operations
+  // instead of six scalar ones. A NaN goes to bin 0 (max returns its second operand).
+  void add_one(const BuildRef& r, Float4 lo4, Float4 scale4, Float4 last) {
     const Float4 lo = load_lo(r), hi = load_hi(r);
     float f[4];
-    ((lo + hi - lo4) * scale4).store(f);
+    min(max((lo + hi - lo4) * scale4, Float4::broadcast(0.f)), last).store(f);
     for (int a = 0; a < 3; ++a) {
-      const int b = std::clamp(static_cast<int>(f[a]), 0, bins - 1);
+      const int b = static_cast<int>(f[a]);
       box[a][b].extend(lo, hi);
       ++count[a][b];
     }
   }
   void add(const BuildRef* refs, std::uint32_t n, const BinMap& map) {
     const Float4 lo4 = Float4::load(map.lo), scale4 = Float4::load(map.scale);
-    for (std::uint32_t i = 0; i < n; ++i) add_one(refs[i], lo4, scale4);
+    const Float4 last = Float4::broadcast(static_cast<float>(bins - 1));
+    for (std::uint32_t i = 0; i < n; ++i) add_one(refs[i], lo4, scale4, last);
   }
   void merge(const BinSet& o) {
     for (int a = 0; a < 3; ++a)
@@ -171,12 +155,22 @@ struct ObjectSplit {
   Box4 left, right;  // the children's boxes, unions of their bins
 };
 
+// Sets `best.cost` from the `split_areas` of the best candidate. A NaN cost means no split: it
+// happens where the node's area is 0, and then every candidate's cost is NaN.
+void finish_cost(ObjectSplit& best, float best_areas, float parent_area, const CostModel& cost) {
+  best.cost = cost.split_cost(best_areas, parent_area);
+  if (std::isnan(best.cost)) best = ObjectSplit{};
+  if (!(parent_area > 0.f) && best.axis >= 0) best.cost = 0.f;  // flat: any valid split helps
+}
+
 // Evaluates the bin boundaries on every axis; cost is relative to the parent's area. Only
 // boundaries right after a non-empty bin are evaluated: the others repeat the split (same
 // sides, same boxes, same cost) of the boundary before them, which the strict `<` would keep
-// anyway, so skipping them changes nothing but the time spent on small nodes.
+// anyway, so skipping them changes nothing but the time spent on small nodes. Candidates are
+// compared by `split_areas`, which orders them as their costs do, without a division each.
 ObjectSplit best_object_split(const BinSet& set, float parent_area, const CostModel& cost) {
   ObjectSplit best;
+  float best_areas = INFINITY;
   const int bins = set.bins;
   float right_area[kMaxBins];
   std::uint32_t right_count[kMaxBins];
@@ -186,8 +180,10 @@ ObjectSplit best_object_split(const BinSet& set, float parent_area, const CostMo
     Box4 acc;
     std::uint32_t n = 0;
     for (int b = bins - 1; b > 0; --b) {
-      acc.extend(box[b].box4());
-      n += count[b];
+      if (count[b] != 0) {  // an empty bin's box is empty
+        acc.extend(box[b].box4());
+        n += count[b];
+      }
       if (count[b - 1] != 0) {
         right_area[b] = area(acc);
         right_count[b] = n;
@@ -200,23 +196,26 @@ ObjectSplit best_object_split(const BinSet& set, float parent_area, const CostMo
       acc.extend(box[b - 1].box4());
       n += count[b - 1];
       if (right_count[b] == 0) continue;
-      const float c = cost.split(area(acc), n, right_area[b], right_count[b], parent_area);
-      if (c < best.cost) {
+      const float c = cost.split_areas(area(acc), n, right_area[b], right_count[b]);
+      if (c < best_areas) {
         best.axis = axis;
         best.bin = b;
-        best.cost = c;
+        best_areas = c;
       }
     }
   }
-  if (best.axis >= 0) {
-    for (int b = 0; b < bins; ++b) (b < best.bin ? best.left : best.right).extend(set.box[best.axis][b].box4());
-    if (!(parent_area > 0.f)) best.cost = 0.f;  // flat: any valid split helps
+  if (best.axis < 0) return best;
+  for (int b = 0; b < bins; ++b) {
+    if (set.count[best.axis][b] != 0) (b < best.bin ? best.left : best.right).extend(set.box[best.axis][b].box4());
   }
+  finish_cost(best, best_areas, parent_area, cost);
   return best;
 }
 
 // Nodes with at most this many references find their split without bins (small_object_split).
-constexpr std::uint32_t kSmallNode = 10;
+constexpr std::uint32_t kSmallNode = 16;
+// Only nodes with more references than this look for a spatial split.
+constexpr std::uint32_t kSpatialSplitMin = 10;
 
 // The split best_object_split would find, for a node of few references, computed from the
 // references directly: on each axis they are ordered by bin, and each boundary between two
@@ -226,45 +225,50 @@ constexpr std::uint32_t kSmallNode = 10;
 ObjectSplit small_object_split(const BuildRef* refs, std::uint32_t count, const BinMap& map, float parent_area,
                                const CostModel& cost) {
   ObjectSplit best;
+  float best_areas = INFINITY;
   Float4 lo[kSmallNode], hi[kSmallNode];
+  int bin[3][kSmallNode];  // every reference's bin on every axis, computed as BinSet::add does
+  const Float4 lo4 = Float4::load(map.lo), scale4 = Float4::load(map.scale);
+  const Float4 last = Float4::broadcast(static_cast<float>(map.bins - 1));
   for (std::uint32_t i = 0; i < count; ++i) {
     lo[i] = load_lo(refs[i]);
     hi[i] = load_hi(refs[i]);
+    float f[4];
+    min(max((lo[i] + hi[i] - lo4) * scale4, Float4::broadcast(0.f)), last).store(f);
+    for (int a = 0; a < 3; ++a) bin[a][i] = static_cast<int>(f[a]);
   }
   float right_area[kSmallNode];
   for (int axis = 0; axis < 3; ++axis) {
     // Indices ordered by bin (insertion sort: count is small).
-    int bin[kSmallNode];
+    const int* b = bin[axis];
     std::uint8_t order[kSmallNode];
     for (std::uint32_t i = 0; i < count; ++i) {
-      bin[i] = map.bin(refs[i].centroid2(axis), axis);
       std::uint32_t j = i;
-      for (; j > 0 && bin[order[j - 1]] > bin[i]; --j) order[j] = order[j - 1];
+      for (; j > 0 && b[order[j - 1]] > b[i]; --j) order[j] = order[j - 1];
       order[j] = static_cast<std::uint8_t>(i);
     }
-    if (bin[order[0]] == bin[order[count - 1]]) continue;  // one occupied bin: no split on this axis
+    if (b[order[0]] == b[order[count - 1]]) continue;  // one occupied bin: no split on this axis
     Box4 acc;
     for (std::uint32_t k = count - 1; k > 0; --k) {
       acc.extend(lo[order[k]], hi[order[k]]);
-      right_area[k] = area(acc);
+      if (b[order[k - 1]] != b[order[k]]) right_area[k] = area(acc);  // only boundaries are read
     }
     acc = Box4{};
     for (std::uint32_t k = 0; k + 1 < count; ++k) {
       acc.extend(lo[order[k]], hi[order[k]]);
-      if (bin[order[k]] == bin[order[k + 1]]) continue;  // not a boundary between bins
-      const float c = cost.split(area(acc), k + 1, right_area[k + 1], count - k - 1, parent_area);
-      if (c < best.cost) {
+      if (b[order[k]] == b[order[k + 1]]) continue;  // not a boundary between bins
+      const float c = cost.split_areas(area(acc), k + 1, right_area[k + 1], count - k - 1);
+      if (c < best_areas) {
         best.axis = axis;
-        best.bin = bin[order[k]] + 1;
-        best.cost = c;
+        best.bin = b[order[k]] + 1;
+        best_areas = c;
       }
     }
   }
-  if (best.axis >= 0) {
-    for (std::uint32_t i = 0; i < count; ++i)
-      (map.bin(refs[i].centroid2(best.axis), best.axis) < best.bin ? best.left : best.right).extend(lo[i], hi[i]);
-    if (!(parent_area > 0.f)) best.cost = 0.f;
-  }
+  if (best.axis < 0) return best;
+  for (std::uint32_t i = 0; i < count; ++i)
+    (bin[best.axis][i] < best.bin ? best.left : best.right).extend(lo[i], hi[i]);
+  finish_cost(best, best_areas, parent_area, cost);
   return best;
 }
 
@@ -317,27 +321,19 @@ class Builder {
         });
   }
 
-  // Moves the references of bins [0, split.bin) on the split axis to the front (a sequential
-  // Hoare partition, so the order is deterministic) and gathers each side's centroid bounds.
+  // Moves the references of bins [0, split_bin) on the split axis to the front and gathers each
+  // side's centroid bounds; large nodes partition in parallel (with a result that does not
+  // depend on the thread count), since a sequential pass over them is what keeps the first
+  // levels of the tree from using more than one core.
   std::uint32_t partition(std::uint32_t begin, std::uint32_t end, const BinMap& map, int axis, int split_bin,
                           Box4& left_centroids, Box4& right_centroids) {
-    BuildRef* i = m_refs + begin;
-    BuildRef* j = m_refs + end;
-    auto goes_left = [&](const BuildRef& r) { return map.bin(r.centroid2(axis), axis) < split_bin; };
-    auto centroid = [](const BuildRef& r) { return load_lo(r) + load_hi(r); };
-    for (;;) {
-      while (i < j && goes_left(*i)) {
-        const Float4 c = centroid(*i++);
-        left_centroids.extend(c, c);
-      }
-      while (i < j && !goes_left(j[-1])) {
-        const Float4 c = centroid(*--j);
-        right_centroids.extend(c, c);
-      }
-      if (i >= j) break;
-      std::swap(*i, j[-1]);
-    }
-    return static_cast<std::uint32_t>(i - m_refs);
+    const bvh_build::SplitTest test{axis, split_bin, map.lo[axis], map.scale[axis], map.bins, map.hi[axis]};
+    const bvh_build::PartitionResult p = end - begin >= kParallelPartition
+                                             ? bvh_build::partition_parallel(m_refs + begin, end - begin, test)
+                                             : bvh_build::partition_sequential(m_refs + begin, end - begin, test);
+    left_centroids = p.left_centroids;
+    right_centroids = p.right_centroids;
+    return begin + p.mid;
   }
 
   // Splits [begin, end) at `mid` after ordering by centroid along the widest centroid axis
@@ -390,7 +386,7 @@ class Builder {
         split = best_object_split(bins, parent_area, m_cost);
       }
       bvh_build::SpatialSplit spatial;
-      if (m_config.spatial_splits && count > kSmallNode && range.capacity > end)
+      if (m_config.spatial_splits && count > kSpatialSplitMin && range.capacity > end)
         spatial = try_spatial(range, bounds, split);
       const float best_cost = std::min(split.cost, spatial.cost);
       if ((split.axis < 0 && spatial.axis < 0) || (best_cost >= m_cost.leaf(count) && count <= max_leaf)) {

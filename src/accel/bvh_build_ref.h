@@ -4,6 +4,7 @@
 /// entry points of the spatial-split half (bvh_spatial_split.cpp).
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -48,22 +49,33 @@ struct CostModel {
   float traversal = 1.f;
   float intersection = 1.f;
   std::uint32_t block = 1;
+  /// ~(block - 1) when `block` is a power of two (rounding up is then a mask, not a division,
+  /// which matters: the builder prices every candidate split this way); 0 otherwise.
+  std::uint32_t block_mask = ~0u;
 
   /// The rule from a build configuration.
   explicit CostModel(const BvhConfig& config)
       : traversal(config.traversal_cost),
         intersection(config.intersection_cost),
-        block(static_cast<std::uint32_t>(std::max(1, config.leaf_block_size))) {}
+        block(static_cast<std::uint32_t>(std::max(1, config.leaf_block_size))),
+        block_mask(std::has_single_bit(block) ? ~(block - 1) : 0u) {}
 
   /// Primitive tests a leaf of `n` references is charged for.
   float blocked(std::uint32_t n) const {
-    return static_cast<float>(block == 1 ? n : (n + block - 1) / block * block);  // no division by default
+    return static_cast<float>(block_mask != 0 ? (n + block - 1) & block_mask : (n + block - 1) / block * block);
   }
   /// Cost of a leaf of `n` references, relative to one primitive test.
   float leaf(std::uint32_t n) const { return intersection * blocked(n); }
+  /// The part of a split's cost that differs between candidate splits of one node: comparing
+  /// these instead of `split` saves a division per candidate.
+  float split_areas(float left_area, std::uint32_t left_n, float right_area, std::uint32_t right_n) const {
+    return left_area * blocked(left_n) + right_area * blocked(right_n);
+  }
+  /// Cost of a split whose `split_areas` is `areas`, for a node of area `parent_area`.
+  float split_cost(float areas, float parent_area) const { return traversal + intersection * areas / parent_area; }
   /// Cost of splitting a node of area `parent_area` into children (area, count) left and right.
   float split(float left_area, std::uint32_t left_n, float right_area, std::uint32_t right_n, float parent_area) const {
-    return traversal + intersection * (left_area * blocked(left_n) + right_area * blocked(right_n)) / parent_area;
+    return split_cost(split_areas(left_area, left_n, right_area, right_n), parent_area);
   }
 };
 

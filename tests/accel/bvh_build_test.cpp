@@ -6,10 +6,12 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <vector>
 
+#include "../../src/accel/bvh_build_partition.h"
 #include "accel_compare_util.h"
 #include "raylab/accel/brute_force.h"
 #include "raylab/accel/bvh.h"
@@ -81,6 +83,108 @@ TEST(BvhBuild, SameTreeWithOneAndTwoThreads) {
     expect_same_tree(build_with_threads(g, config, 2), one);
     config.spatial_splits = true;
     expect_same_tree(build_with_threads(g, config, 2), build_with_threads(g, config, 1));
+  }
+}
+
+// Enough triangles that the root and the first levels partition in parallel (several chunks of
+// bvh_build::kPartitionChunk references, the last one partial), in an order that is not
+// spatial (so chunks hold both sides).
+Geometry many_more_triangles(std::uint64_t seed) {
+  Sampler s(seed);
+  Geometry g;
+  for (int i = 0; i < 80000; ++i) g.add(random_triangle(s, s.in_box(Vec3(-50.f), Vec3(50.f)), s.uni(0.1f, 2.f)), 0);
+  for (int i = 0; i < 300; ++i) g.add(Sphere{s.in_box(Vec3(-50.f), Vec3(50.f)), s.uni(0.1f, 2.f)}, 1);
+  return g;
+}
+
+TEST(BvhBuild, SameTreeWithOneTwoAndThreeThreadsOnALargeScene) {
+  const Geometry g = many_more_triangles(4);
+  BvhConfig config;
+  config.leaf_block_size = 4;  // as the wide BVH builds it
+  const BvhTree one = build_with_threads(g, config, 1);
+  for (int threads : {2, 3}) {
+    SCOPED_TRACE(threads);
+    expect_same_tree(build_with_threads(g, config, threads), one);
+  }
+}
+
+// References with random boxes, in random order.
+std::vector<bvh_build::BuildRef> random_refs(std::uint32_t n, std::uint64_t seed) {
+  Sampler s(seed);
+  std::vector<bvh_build::BuildRef> refs(n);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Vec3 lo = s.in_box(Vec3(-10.f), Vec3(10.f));
+    const Vec3 hi = lo + s.in_box(Vec3(0.f), Vec3(2.f));
+    refs[i].set_box({lo, hi});
+    refs[i].id = i;
+    refs[i].splittable = 1;
+  }
+  return refs;
+}
+
+std::vector<std::uint32_t> sorted_ids(const bvh_build::BuildRef* refs, std::uint32_t n) {
+  std::vector<std::uint32_t> ids(n);
+  for (std::uint32_t i = 0; i < n; ++i) ids[i] = refs[i].id;
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+void expect_same_box(const bvh_build::Box4& a, const bvh_build::Box4& b) {
+  const Box3 x = a.box3(), y = b.box3();
+  EXPECT_EQ(std::memcmp(&x, &y, sizeof x), 0);
+}
+
+TEST(BvhBuild, ParallelPartitionSplitsAsTheSequentialOne) {
+  // Sizes below one chunk, exactly two chunks, and several with a partial last chunk.
+  for (std::uint32_t n : {1000u, 2 * bvh_build::kPartitionChunk, 5 * bvh_build::kPartitionChunk + 123}) {
+    const std::vector<bvh_build::BuildRef> input = random_refs(n, n);
+    // Splits on every axis, including ones that send everything to one side.
+    for (const std::array<int, 2>& axis_bin :
+         {std::array{0, 8}, std::array{1, 3}, std::array{2, 15}, std::array{0, 16}, std::array{1, 0}}) {
+      SCOPED_TRACE(testing::Message() << n << " refs, axis " << axis_bin[0] << ", bin " << axis_bin[1]);
+      const bvh_build::SplitTest test{axis_bin[0], axis_bin[1], -20.f, 16.f / 44.f, 16, 24.f};
+      std::vector<bvh_build::BuildRef> seq = input;
+      const bvh_build::PartitionResult a = bvh_build::partition_sequential(seq.data(), n, test);
+      std::vector<bvh_build::BuildRef> par;
+      bvh_build::PartitionResult b;
+      for (int threads : {1, 2, 3}) {
+        tbb::global_control cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+        std::vector<bvh_build::BuildRef> refs = input;
+        const bvh_build::PartitionResult p = bvh_build::partition_parallel(refs.data(), n, test);
+        if (threads == 1) {
+          par = refs;
+          b = p;
+        } else {
+          // The same order whatever the thread count.
+          ASSERT_EQ(p.mid, b.mid);
+          ASSERT_EQ(std::memcmp(refs.data(), par.data(), n * sizeof(bvh_build::BuildRef)), 0) << threads;
+        }
+      }
+      ASSERT_EQ(b.mid, a.mid);
+      for (std::uint32_t i = 0; i < n; ++i) ASSERT_EQ(test.goes_left(par[i]), i < b.mid) << "reference " << i;
+      EXPECT_EQ(sorted_ids(par.data(), b.mid), sorted_ids(seq.data(), a.mid));
+      EXPECT_EQ(sorted_ids(par.data() + b.mid, n - b.mid), sorted_ids(seq.data() + a.mid, n - a.mid));
+      if (a.mid > 0) expect_same_box(b.left_centroids, a.left_centroids);
+      if (a.mid < n) expect_same_box(b.right_centroids, a.right_centroids);
+    }
+  }
+}
+
+TEST(BvhBuild, SplitThresholdAgreesWithTheBins) {
+  Sampler s(9);
+  for (int trial = 0; trial < 200; ++trial) {
+    const float lo = s.uni(-1e3f, 1e3f), hi = lo + s.log_uniform(1e-3f, 1e3f);
+    const int bins = 2 + trial % 31;
+    const float scale = static_cast<float>(bins) / (hi - lo);
+    const bvh_build::SplitTest test{0, 1 + trial % (bins - 1), lo, scale, bins, hi};
+    const float t = test.threshold();
+    // Random points, the ends, and the floats next to the threshold.
+    std::vector<float> points{lo, hi, t, std::nextafter(t, -INFINITY), std::nextafter(t, INFINITY)};
+    for (int i = 0; i < 200; ++i) points.push_back(s.uni(lo, hi));
+    for (float c : points) {
+      if (!(c >= lo && c <= hi)) continue;
+      ASSERT_EQ(!(c >= t), test.bin_of(c) < test.bin) << "trial " << trial << " c " << c;
+    }
   }
 }
 
