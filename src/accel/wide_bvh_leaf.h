@@ -86,13 +86,13 @@ template <bool kAnyHit, bool kCount, int W>
 inline bool intersect_wide_leaf(const WideBvhLeaves& leaves, const Geometry& geometry, std::uint32_t first,
                                 std::uint32_t count_flags, const WatertightRay& tri_ray, const Ray& ray, float tmin,
                                 float& tmax, Hit& best, std::uint64_t& prim_tests) {
-  bool found =
-      intersect_wide_leaf_triangles<kAnyHit, kCount, W>(leaves, first, count_flags, tri_ray, tmin, tmax, best, prim_tests);
+  bool found = intersect_wide_leaf_triangles<kAnyHit, kCount, W>(leaves, first, count_flags, tri_ray, tmin, tmax, best,
+                                                                 prim_tests);
   if constexpr (kAnyHit) {
     if (found) return true;
   }
-  found |= intersect_wide_leaf_others<kAnyHit, kCount, W>(leaves, geometry, first, count_flags, tri_ray, ray, tmin, tmax,
-                                                          best, prim_tests);
+  found |= intersect_wide_leaf_others<kAnyHit, kCount, W>(leaves, geometry, first, count_flags, tri_ray, ray, tmin,
+                                                          tmax, best, prim_tests);
   return found;
 }
 
