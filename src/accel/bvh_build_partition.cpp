@@ -11,22 +11,47 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
 namespace raylab::bvh_build {
 
+namespace {
+
+// Floats in order as integers: a < b exactly when ordered_key(a) < ordered_key(b), for every
+// non-NaN a and b (-0 and +0 share key 0), so a search over floats can bisect integers.
+std::int64_t ordered_key(float f) {
+  const std::int32_t bits = std::bit_cast<std::int32_t>(f);
+  return bits >= 0 ? bits : -static_cast<std::int64_t>(bits & 0x7fffffff);
+}
+float from_ordered_key(std::int64_t k) {
+  return k >= 0 ? std::bit_cast<float>(static_cast<std::int32_t>(k))
+                : std::bit_cast<float>(static_cast<std::uint32_t>(-k) | 0x80000000u);
+}
+
+}  // namespace
+
 float SplitTest::threshold() const {
   if (!(scale > 0.f)) return bin > 0 ? INFINITY : -INFINITY;  // one bin, bin 0
   if (bin_of(hi) < bin) return INFINITY;                      // all left
   if (bin_of(lo) >= bin) return -INFINITY;                    // all right
-  // Start from the plane the bins were laid out with; rounding puts it a few floats off.
-  float t = std::clamp(lo + static_cast<float>(bin) / scale, lo, hi);
-  while (bin_of(t) < bin) t = std::nextafter(t, INFINITY);  // stops at hi at the latest
-  for (float below = std::nextafter(t, -INFINITY); t > lo && bin_of(below) >= bin; below = std::nextafter(t, -INFINITY))
-    t = below;
-  return t;
+  // The least float of (lo, hi] in bin `bin` or above, by bisection over the floats in order:
+  // bin_of grows with its argument. (Stepping float by float from the plane the bins were laid
+  // out with is not bounded: near zero, one rounding step of a large `lo` spans billions of
+  // floats.) Invariant: bin_of(from(below)) < bin <= bin_of(from(above)).
+  std::int64_t below = ordered_key(lo), above = ordered_key(hi);
+  while (above - below > 1) {
+    const std::int64_t mid = below + (above - below) / 2;
+    if (bin_of(from_ordered_key(mid)) >= bin) {
+      above = mid;
+    } else {
+      below = mid;
+    }
+  }
+  return from_ordered_key(above);
 }
 
 namespace {

@@ -173,13 +173,20 @@ TEST(BvhBuild, ParallelPartitionSplitsAsTheSequentialOne) {
 TEST(BvhBuild, SplitThresholdAgreesWithTheBins) {
   Sampler s(9);
   for (int trial = 0; trial < 200; ++trial) {
-    const float lo = s.uni(-1e3f, 1e3f), hi = lo + s.log_uniform(1e-3f, 1e3f);
-    const int bins = 2 + trial % 31;
+    // Every fourth node is centred on zero and split in the middle: the threshold falls among
+    // the tiny floats, where one rounding step of `lo` spans billions of floats (a search float
+    // by float took minutes there).
+    const bool around_zero = trial % 4 == 3;
+    const float half = s.log_uniform(1e1f, 1e4f);
+    const float lo = around_zero ? -half : s.uni(-1e3f, 1e3f);
+    const float hi = around_zero ? half : lo + s.log_uniform(1e-3f, 1e3f);
+    const int bins = around_zero ? 2 * (1 + trial % 16) : 2 + trial % 31;
     const float scale = static_cast<float>(bins) / (hi - lo);
-    const bvh_build::SplitTest test{0, 1 + trial % (bins - 1), lo, scale, bins, hi};
+    const int bin = around_zero ? bins / 2 : 1 + trial % (bins - 1);
+    const bvh_build::SplitTest test{0, bin, lo, scale, bins, hi};
     const float t = test.threshold();
     // Random points, the ends, and the floats next to the threshold.
-    std::vector<float> points{lo, hi, t, std::nextafter(t, -INFINITY), std::nextafter(t, INFINITY)};
+    std::vector<float> points{lo, hi, t, std::nextafter(t, -INFINITY), std::nextafter(t, INFINITY), 0.f, -0.f};
     for (int i = 0; i < 200; ++i) points.push_back(s.uni(lo, hi));
     for (float c : points) {
       if (!(c >= lo && c <= hi)) continue;
