@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "raylab/accel/wide_bvh.h"
+#include "raylab/geometry/triangle_rays.h"
 #include "wide_bvh_walk.h"
 
 namespace raylab {
@@ -119,6 +120,52 @@ void for_each_octant_run(std::span<const Ray> rays, const Fn& fn) {
   }
 }
 
+/// Rays of one group that the leaves test ray-parallel rather than one by one: below this the
+/// ray-parallel test (one pass per triangle for the whole group) costs more than ray by ray
+/// (one pass per block of four triangles for each ray).
+constexpr int kRayParallelLeaf = 4;
+
+/// Packets whose directions lie within this cosine of the first ray's walk interior nodes on
+/// the packet's interval test alone: their interval is nearly as tight as each ray's own test.
+constexpr float kCoherentCosine = 0.98f;
+
+/// Whether the directions of `rays[0..n)` all lie within kCoherentCosine of the first.
+bool directions_coherent(const Ray* rays, int n) {
+  const Vec3 d0 = rays[0].direction;
+  const float d0_sq = dot(d0, d0);
+  for (int i = 1; i < n; ++i) {
+    const Vec3 d = rays[i].direction;
+    const float c = dot(d, d0);
+    if (!(c > 0.f && c * c >= kCoherentCosine * kCoherentCosine * dot(d, d) * d0_sq)) return false;
+  }
+  return true;
+}
+
+/// The watertight constants of kRayLanes rays (which share one axis permutation) as lanes.
+WatertightRays<kRayLanes> watertight_rays(const WatertightRay* r) {
+  using L = simd::WideFloat<kRayLanes>;
+  alignas(64) float lanes[6][kRayLanes];
+  for (int i = 0; i < kRayLanes; ++i) {
+    lanes[0][i] = r[i].origin[r[0].kx];
+    lanes[1][i] = r[i].origin[r[0].ky];
+    lanes[2][i] = r[i].origin[r[0].kz];
+    lanes[3][i] = r[i].sx;
+    lanes[4][i] = r[i].sy;
+    lanes[5][i] = r[i].sz;
+  }
+  WatertightRays<kRayLanes> w;
+  w.kx = r[0].kx;
+  w.ky = r[0].ky;
+  w.kz = r[0].kz;
+  w.ox = L::load(lanes[0]);
+  w.oy = L::load(lanes[1]);
+  w.oz = L::load(lanes[2]);
+  w.sx = L::load(lanes[3]);
+  w.sy = L::load(lanes[4]);
+  w.sz = L::load(lanes[5]);
+  return w;
+}
+
 /// A subtree waiting to be visited by the rays in `rays` (bit i: lane i), entered by the
 /// nearest of them at `t`.
 struct PacketStackEntry {
@@ -132,23 +179,16 @@ template <int W>
 template <bool kAnyHit, int kOctant>
 void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occluded_out, int n) const {
   using L = simd::WideFloat<kRayLanes>;
+  constexpr int kGroups = kPacketSize / kRayLanes;
+  constexpr std::uint32_t kGroupMask = (1u << kRayLanes) - 1u;
   constexpr int kNear[3] = {(kOctant & 1) ? 1 : 0, (kOctant & 2) ? 1 : 0, (kOctant & 4) ? 1 : 0};
   // Per-lane state, as structure of arrays for the box tests across rays (unused lanes copy
-  // ray 0 and stay inactive), and per ray for the leaf tests.
+  // ray 0 and stay inactive), and per ray for the single-ray leaf tests.
   alignas(64) float origin[3][kPacketSize], inv[3][kPacketSize], tmin[kPacketSize], tmax[kPacketSize];
   WatertightRay tri_rays[kPacketSize];
   Hit best[kPacketSize];
   float tmin_lo = INFINITY;
   std::uint32_t found = 0, alive = 0;
-  // The single-ray constants are prepared on first use: many packets miss everything.
-  std::uint32_t has_tri_ray = 0;
-  auto tri_ray = [&](int i) -> const WatertightRay& {
-    if (!((has_tri_ray >> i) & 1u)) {
-      tri_rays[i] = WatertightRay(rays[i]);
-      has_tri_ray |= 1u << i;
-    }
-    return tri_rays[i];
-  };
   for (int i = 0; i < kPacketSize; ++i) {
     const Ray& r = rays[i < n ? i : 0];
     for (int a = 0; a < 3; ++a) {
@@ -157,6 +197,7 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
     }
     tmin[i] = r.tmin;
     tmax[i] = r.tmax;
+    tri_rays[i] = i < n ? WatertightRay(r) : tri_rays[0];
     if (i >= n) continue;
     best[i] = kAnyHit ? Hit{} : hits[i];
     tmin_lo = std::min(tmin_lo, r.tmin);
@@ -164,6 +205,17 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
     if (r.tmin <= r.tmax) alive |= 1u << i;
   }
   const PacketInterval<W> interval = packet_interval<W, kOctant>(origin, inv, tmin_lo);
+  const bool coherent = !kAnyHit && interval.valid && directions_coherent(rays, n);
+  // Rays that share the watertight test's axis permutation can be tested ray-parallel.
+  bool same_axes = true;
+  for (int i = 1; i < n; ++i) {
+    same_axes = same_axes && tri_rays[i].kx == tri_rays[0].kx && tri_rays[i].ky == tri_rays[0].ky &&
+                tri_rays[i].kz == tri_rays[0].kz;
+  }
+  WatertightRays<kRayLanes> group_rays[kGroups];
+  if (same_axes) {
+    for (int g = 0; g < kGroups; ++g) group_rays[g] = watertight_rays(tri_rays + g * kRayLanes);
+  }
 
   // Bit mask of the lanes of group g that enter child c of `node` within their own
   // [tmin, tmax]: the single-ray box test, lane by lane, with the same operations.
@@ -183,6 +235,68 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
     return static_cast<std::uint32_t>(less_equal_mask(t_near, t_far)) << o;
   };
 
+  // A ray's candidate from the leaf lane holding primitive `id`: kept under the exact
+  // closest-hit rule (lower id on ties), as the single-ray leaf test keeps it.
+  auto offer = [&](int i, std::uint32_t id, float t, float u, float v) {
+    if (!(t < best[i].tie_limit(id, tmax[i]))) return false;
+    tmax[i] = t;
+    best[i] = {t, id, u, v};
+    found |= 1u << i;
+    if constexpr (kAnyHit) alive &= ~(1u << i);
+    return true;
+  };
+
+  // The leaf (first, count_flags) for the rays in `active`: ray-parallel for the groups with
+  // enough rays sharing the axis permutation, ray by ray for the others.
+  auto test_leaf = [&](std::uint32_t first, std::uint32_t count_flags, std::uint32_t active) {
+    std::uint32_t parallel = 0;
+    if (same_axes) {
+      for (int g = 0; g < kGroups; ++g) {
+        const std::uint32_t m = (active >> (g * kRayLanes)) & kGroupMask;
+        if (std::popcount(m) >= kRayParallelLeaf) parallel |= m << (g * kRayLanes);
+      }
+    }
+    const std::uint32_t triangle_count = m_tree.leaves.triangle_count;
+    std::uint64_t uncounted = 0;
+    if (parallel != 0) {
+      for (std::uint32_t b = first; b < first + leaf_block_count<W>(count_flags); ++b) {
+        const TriangleBlock4& block = m_tree.leaves.blocks[b];
+        for (int lane = 0; lane < 4; ++lane) {
+          const std::uint32_t id = block.id[lane];
+          if (id >= triangle_count) continue;  // empty, or another kind (tested below)
+          for (int g = 0; g < kGroups; ++g) {
+            const int o = g * kRayLanes;
+            if (((parallel >> o) & kGroupMask) == 0) continue;
+            alignas(64) float t[kRayLanes], u[kRayLanes], v[kRayLanes];
+            std::uint32_t hit = intersect_triangle_rays<kRayLanes>(block, lane, group_rays[g], L::load(tmin + o),
+                                                                   L::load(tmax + o), t, u, v);
+            for (hit &= parallel >> o; hit != 0; hit &= hit - 1) {
+              const int j = std::countr_zero(hit);
+              if (offer(o + j, id, t[j], u[j], v[j]) && kAnyHit) parallel &= ~(1u << (o + j));
+            }
+          }
+        }
+      }
+    }
+    for (std::uint32_t m = active & ~parallel; m != 0; m &= m - 1) {
+      const int i = std::countr_zero(m);
+      if (intersect_wide_leaf_triangles<kAnyHit, false, W>(m_tree.leaves, first, count_flags, tri_rays[i], tmin[i],
+                                                           tmax[i], best[i], uncounted)) {
+        found |= 1u << i;
+        if constexpr (kAnyHit) alive &= ~(1u << i);
+      }
+    }
+    if (!leaf_has_others<W>(count_flags)) return;
+    for (std::uint32_t m = active & alive; m != 0; m &= m - 1) {
+      const int i = std::countr_zero(m);
+      if (intersect_wide_leaf_others<kAnyHit, false, W>(m_tree.leaves, m_geometry, first, count_flags, tri_rays[i],
+                                                        rays[i], tmin[i], tmax[i], best[i], uncounted)) {
+        found |= 1u << i;
+        if constexpr (kAnyHit) alive &= ~(1u << i);
+      }
+    }
+  };
+
   std::uint64_t nodes_visited = 0, prim_tests = 0;  // not reported: packets are never counted
   PacketStackEntry stack[kWideStackSize<W>];
   int size = 0;
@@ -192,7 +306,7 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
     // Rays whose closest hit is already nearer than the subtree's entry leave it.
     if constexpr (!kAnyHit) {
       std::uint32_t still = 0;
-      for (int g = 0; g < kPacketSize / kRayLanes; ++g) {
+      for (int g = 0; g < kGroups; ++g) {
         still |= static_cast<std::uint32_t>(less_equal_mask(L::broadcast(current.node.t),
                                                             L::load(tmax + g * kRayLanes) * L::broadcast(kSlabWiden)))
                  << (g * kRayLanes);
@@ -203,21 +317,14 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
       for (std::uint32_t m = active; m != 0; m &= m - 1) {
         const int i = std::countr_zero(m);
         Ray& r = rays[i];
-        if (walk_wide_bvh<kAnyHit, false, kOctant, W>(m_tree, m_geometry, current.node, WideBoxRay<W>(r), tri_ray(i), r,
-                                                      tmax[i], best[i], nodes_visited, prim_tests)) {
+        if (walk_wide_bvh<kAnyHit, false, kOctant, W>(m_tree, m_geometry, current.node, WideBoxRay<W>(r), tri_rays[i],
+                                                      r, tmax[i], best[i], nodes_visited, prim_tests)) {
           found |= 1u << i;
           if constexpr (kAnyHit) alive &= ~(1u << i);
         }
       }
     } else if (active != 0 && current.node.count != 0) {
-      for (std::uint32_t m = active; m != 0; m &= m - 1) {
-        const int i = std::countr_zero(m);
-        if (intersect_wide_leaf<kAnyHit, false, W>(m_tree.leaves, m_geometry, current.node.child, current.node.count,
-                                                   tri_ray(i), rays[i], tmin[i], tmax[i], best[i], prim_tests)) {
-          found |= 1u << i;
-          if constexpr (kAnyHit) alive &= ~(1u << i);
-        }
-      }
+      test_leaf(current.node.child, current.node.count, active);
     } else if (active != 0) {
       const WideBvhNode<W>& node = m_tree.nodes[current.node.child];
       alignas(64) float order_t[W];
@@ -232,15 +339,17 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
       for (; candidates != 0; candidates &= candidates - 1) {
         const int c = std::countr_zero(candidates);
         std::uint32_t entering = 0;
-        if (interval.valid) {
-          for (int g = 0; g < kPacketSize / kRayLanes; ++g) entering |= lanes_entering(node, c, g, nullptr);
+        if (coherent && node.count[c] == 0) {
+          // A coherent packet enters interior children together on the interval test alone;
+          // rays are culled one by one only before a leaf, where testing costs most.
+          entering = active;
+        } else if (interval.valid) {
+          for (int g = 0; g < kGroups; ++g) entering |= lanes_entering(node, c, g, nullptr);
           entering &= active;
         } else {
           // No interval bound to order by: the nearest entry of the lanes that enter.
           alignas(64) float t_enter[kPacketSize];
-          for (int g = 0; g < kPacketSize / kRayLanes; ++g) {
-            entering |= lanes_entering(node, c, g, t_enter + g * kRayLanes);
-          }
+          for (int g = 0; g < kGroups; ++g) entering |= lanes_entering(node, c, g, t_enter + g * kRayLanes);
           entering &= active;
           order_t[c] = INFINITY;
           for (std::uint32_t m = entering; m != 0; m &= m - 1)

@@ -51,6 +51,29 @@ inline WideFloat<W> operator*(const WideFloat<W>& a, const WideFloat<W>& b) {
   for (int i = 0; i < W; ++i) r.v[i] = a.v[i] * b.v[i];
   return r;
 }
+template <int W>
+inline WideFloat<W> operator+(const WideFloat<W>& a, const WideFloat<W>& b) {
+  WideFloat<W> r;
+  for (int i = 0; i < W; ++i) r.v[i] = a.v[i] + b.v[i];
+  return r;
+}
+template <int W>
+inline WideFloat<W> operator/(const WideFloat<W>& a, const WideFloat<W>& b) {
+  WideFloat<W> r;
+  for (int i = 0; i < W; ++i) r.v[i] = a.v[i] / b.v[i];
+  return r;
+}
+/// Lane-wise float(double(a) * double(b) - double(c) * double(d)): both products are exact in
+/// double, so the result is the exact difference rounded (twice, as the scalar expression does).
+template <int W>
+inline WideFloat<W> difference_of_products(const WideFloat<W>& a, const WideFloat<W>& b, const WideFloat<W>& c,
+                                           const WideFloat<W>& d) {
+  WideFloat<W> r;
+  for (int i = 0; i < W; ++i) {
+    r.v[i] = static_cast<float>(double(a.v[i]) * double(b.v[i]) - double(c.v[i]) * double(d.v[i]));
+  }
+  return r;
+}
 /// Lane-wise a < b ? a : b (so b when either is NaN).
 template <int W>
 inline WideFloat<W> min(const WideFloat<W>& a, const WideFloat<W>& b) {
@@ -70,6 +93,20 @@ template <int W>
 inline unsigned less_equal_mask(const WideFloat<W>& a, const WideFloat<W>& b) {
   unsigned m = 0;
   for (int i = 0; i < W; ++i) m |= (a.v[i] <= b.v[i] ? 1u : 0u) << i;
+  return m;
+}
+/// Bit i set where a[i] < b[i] (clear where either is NaN).
+template <int W>
+inline unsigned less_mask(const WideFloat<W>& a, const WideFloat<W>& b) {
+  unsigned m = 0;
+  for (int i = 0; i < W; ++i) m |= (a.v[i] < b.v[i] ? 1u : 0u) << i;
+  return m;
+}
+/// Bit i set where a[i] == b[i] (clear where either is NaN).
+template <int W>
+inline unsigned equal_mask(const WideFloat<W>& a, const WideFloat<W>& b) {
+  unsigned m = 0;
+  for (int i = 0; i < W; ++i) m |= (a.v[i] == b.v[i] ? 1u : 0u) << i;
   return m;
 }
 
@@ -92,6 +129,18 @@ struct Float8 {
 
 inline Float8 operator-(Float8 a, Float8 b) { return {_mm256_sub_ps(a.v, b.v)}; }
 inline Float8 operator*(Float8 a, Float8 b) { return {_mm256_mul_ps(a.v, b.v)}; }
+inline Float8 operator+(Float8 a, Float8 b) { return {_mm256_add_ps(a.v, b.v)}; }
+inline Float8 operator/(Float8 a, Float8 b) { return {_mm256_div_ps(a.v, b.v)}; }
+/// Lane-wise float(double(a) * double(b) - double(c) * double(d)), in two halves of four doubles.
+inline Float8 difference_of_products(Float8 a, Float8 b, Float8 c, Float8 d) {
+  auto half = [&](auto take) {
+    return _mm256_cvtpd_ps(_mm256_sub_pd(_mm256_mul_pd(_mm256_cvtps_pd(take(a.v)), _mm256_cvtps_pd(take(b.v))),
+                                         _mm256_mul_pd(_mm256_cvtps_pd(take(c.v)), _mm256_cvtps_pd(take(d.v)))));
+  };
+  const __m128 lo = half([](__m256 x) { return _mm256_castps256_ps128(x); });
+  const __m128 hi = half([](__m256 x) { return _mm256_extractf128_ps(x, 1); });
+  return {_mm256_insertf128_ps(_mm256_castps128_ps256(lo), hi, 1)};
+}
 /// Lane-wise a < b ? a : b (so b when either is NaN): VMINPS.
 inline Float8 min(Float8 a, Float8 b) { return {_mm256_min_ps(a.v, b.v)}; }
 /// Lane-wise a > b ? a : b (so b when either is NaN): VMAXPS.
@@ -99,6 +148,14 @@ inline Float8 max(Float8 a, Float8 b) { return {_mm256_max_ps(a.v, b.v)}; }
 /// Bit i set where a[i] <= b[i] (clear where either is NaN; ordered, quiet compare).
 inline unsigned less_equal_mask(Float8 a, Float8 b) {
   return static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(a.v, b.v, _CMP_LE_OQ)));
+}
+/// Bit i set where a[i] < b[i] (clear where either is NaN).
+inline unsigned less_mask(Float8 a, Float8 b) {
+  return static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(a.v, b.v, _CMP_LT_OQ)));
+}
+/// Bit i set where a[i] == b[i] (clear where either is NaN).
+inline unsigned equal_mask(Float8 a, Float8 b) {
+  return static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(a.v, b.v, _CMP_EQ_OQ)));
 }
 
 }  // namespace avx
@@ -121,6 +178,18 @@ struct Float16 {
 
 inline Float16 operator-(Float16 a, Float16 b) { return {_mm512_sub_ps(a.v, b.v)}; }
 inline Float16 operator*(Float16 a, Float16 b) { return {_mm512_mul_ps(a.v, b.v)}; }
+inline Float16 operator+(Float16 a, Float16 b) { return {_mm512_add_ps(a.v, b.v)}; }
+inline Float16 operator/(Float16 a, Float16 b) { return {_mm512_div_ps(a.v, b.v)}; }
+/// Lane-wise float(double(a) * double(b) - double(c) * double(d)), in two halves of eight doubles.
+inline Float16 difference_of_products(Float16 a, Float16 b, Float16 c, Float16 d) {
+  auto half = [&](auto take) {
+    return _mm512_cvtpd_ps(_mm512_sub_pd(_mm512_mul_pd(_mm512_cvtps_pd(take(a.v)), _mm512_cvtps_pd(take(b.v))),
+                                         _mm512_mul_pd(_mm512_cvtps_pd(take(c.v)), _mm512_cvtps_pd(take(d.v)))));
+  };
+  const __m256 lo = half([](__m512 x) { return _mm512_castps512_ps256(x); });
+  const __m256 hi = half([](__m512 x) { return _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(x), 1)); });
+  return {_mm512_castpd_ps(_mm512_insertf64x4(_mm512_castps_pd(_mm512_castps256_ps512(lo)), _mm256_castps_pd(hi), 1))};
+}
 // The zero-masking forms with every lane selected are plain VMINPS/VMAXPS; GCC 12's unmasked
 // _mm512_min_ps/_mm512_max_ps start from an undefined register and raise -Wmaybe-uninitialized.
 /// Lane-wise a < b ? a : b (so b when either is NaN): VMINPS.
@@ -130,6 +199,14 @@ inline Float16 max(Float16 a, Float16 b) { return {_mm512_maskz_max_ps(0xFFFF, a
 /// Bit i set where a[i] <= b[i] (clear where either is NaN).
 inline unsigned less_equal_mask(Float16 a, Float16 b) {
   return static_cast<unsigned>(_mm512_cmp_ps_mask(a.v, b.v, _CMP_LE_OQ));
+}
+/// Bit i set where a[i] < b[i] (clear where either is NaN).
+inline unsigned less_mask(Float16 a, Float16 b) {
+  return static_cast<unsigned>(_mm512_cmp_ps_mask(a.v, b.v, _CMP_LT_OQ));
+}
+/// Bit i set where a[i] == b[i] (clear where either is NaN).
+inline unsigned equal_mask(Float16 a, Float16 b) {
+  return static_cast<unsigned>(_mm512_cmp_ps_mask(a.v, b.v, _CMP_EQ_OQ));
 }
 
 }  // namespace avx512
