@@ -1,4 +1,4 @@
-// The wide BVH accelerator: build, and the single-ray traversal ordered by octant and distance.
+// The wide BVH accelerator: build, and the single-ray traversal ordered by distance.
 
 #include "raylab/accel/wide_bvh.h"
 
@@ -38,21 +38,13 @@ template <int W>
 template <bool kAnyHit, bool kCount>
 bool WideBvh<W>::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   if (m_tree.leaves.empty()) return false;
-  return dispatch_octant(direction_octant(ray.direction), [&](auto octant) {
-    return traverse_octant<kAnyHit, kCount, decltype(octant)::value>(ray, hit, stats);
-  });
-}
-
-template <int W>
-template <bool kAnyHit, bool kCount, int kOctant>
-bool WideBvh<W>::traverse_octant(Ray& ray, Hit& hit, TraversalStats* stats) const {
   const WideBoxRay<W> box_ray(ray);
   const WatertightRay tri_ray(ray);
   float tmax = ray.tmax;
   Hit best = hit;
   std::uint64_t nodes_visited = 0, prim_tests = 0;
-  const bool found = walk_wide_bvh<kAnyHit, kCount, kOctant, W>(
-      m_tree, m_geometry, WideStackEntry{0, 0, ray.tmin}, box_ray, tri_ray, ray, tmax, best, nodes_visited, prim_tests);
+  const bool found = walk_wide_bvh<kAnyHit, kCount, W>(m_tree, m_geometry, WideStackEntry{0, 0, ray.tmin}, box_ray,
+                                                       tri_ray, ray, tmax, best, nodes_visited, prim_tests);
   return finish_traversal<kCount>(found, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
 }
 

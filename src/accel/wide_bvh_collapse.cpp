@@ -130,6 +130,7 @@ class WideCollapser {
         *ids++ = id;  // tested through the Geometry
       }
     }
+    if (lane % 4 != 0) leaves.blocks.back().repeat_first_lane();
     return slot;
   }
 

@@ -3,6 +3,8 @@
 // single-ray and the packet traversals so that both compute exactly the same numbers.
 
 #include <bit>
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 #include "raylab/accel/wide_bvh.h"
@@ -96,11 +98,16 @@ inline bool intersect_wide_leaf(const WideBvhLeaves& leaves, const Geometry& geo
   return found;
 }
 
-/// The per-ray constants of the W-wide box test, for a ray in octant kOctant.
+/// The per-ray constants of the W-wide box test. The near plane of each axis (`hi` where the
+/// direction's sign bit is set, as direction_octant counts it, else `lo`) is chosen once per ray
+/// as a byte offset into the node, not by instantiating the walk per octant: diffuse rays come in
+/// every octant, and dispatching on it is an indirect jump that mispredicts for most of them.
 template <int W>
 struct WideBoxRay {
   using F = simd::WideFloat<W>;
   F ox, oy, oz, ix, iy, iz;
+  std::uint32_t near_x = 0, near_y = 0, near_z = 0;  ///< byte offsets of the near planes
+  std::uint32_t far_x = 0, far_y = 0, far_z = 0;     ///< byte offsets of the far planes
 
   /// Unset constants, to be assigned before use (packets keep an array of them).
   WideBoxRay() = default;
@@ -113,20 +120,21 @@ struct WideBoxRay {
         // a face plane are dropped by min/max taking the running value as second operand.
         ix(F::broadcast(1.f / ray.direction.x)),
         iy(F::broadcast(1.f / ray.direction.y)),
-        iz(F::broadcast(1.f / ray.direction.z)) {}
+        iz(F::broadcast(1.f / ray.direction.z)) {
+    plane_offsets(std::signbit(ray.direction.x), 0, near_x, far_x);
+    plane_offsets(std::signbit(ray.direction.y), 1, near_y, far_y);
+    plane_offsets(std::signbit(ray.direction.z), 2, near_z, far_z);
+  }
 
   /// Bit mask of the children of `node` that the ray enters within [tmin, tmax] (the exit
   /// widened by kSlabWiden), and their entry distances in `t_enter`.
-  template <int kOctant>
   unsigned test(const WideBvhNode<W>& node, float tmin, float tmax, float* t_enter) const {
-    // Near plane per axis: `hi` where the direction is negative. Chosen at compile time.
-    constexpr int kNearX = (kOctant & 1) ? 1 : 0, kNearY = (kOctant & 2) ? 1 : 0, kNearZ = (kOctant & 4) ? 1 : 0;
-    const F tx0 = (F::load(kNearX ? node.hi[0] : node.lo[0]) - ox) * ix;
-    const F tx1 = (F::load(kNearX ? node.lo[0] : node.hi[0]) - ox) * ix;
-    const F ty0 = (F::load(kNearY ? node.hi[1] : node.lo[1]) - oy) * iy;
-    const F ty1 = (F::load(kNearY ? node.lo[1] : node.hi[1]) - oy) * iy;
-    const F tz0 = (F::load(kNearZ ? node.hi[2] : node.lo[2]) - oz) * iz;
-    const F tz1 = (F::load(kNearZ ? node.lo[2] : node.hi[2]) - oz) * iz;
+    const F tx0 = (plane(node, near_x) - ox) * ix;
+    const F tx1 = (plane(node, far_x) - ox) * ix;
+    const F ty0 = (plane(node, near_y) - oy) * iy;
+    const F ty1 = (plane(node, far_y) - oy) * iy;
+    const F tz0 = (plane(node, near_z) - oz) * iz;
+    const F tz1 = (plane(node, far_z) - oz) * iz;
     const F t_near = max(tz0, max(ty0, max(tx0, F::broadcast(tmin))));
     // Widened after the closest-hit limit too: a primitive in a box face can be hit at a
     // distance that rounds just below the box's computed entry and the current closest hit.
@@ -141,6 +149,19 @@ struct WideBoxRay {
   /// distance is NaN, which the test drops.
   static unsigned occupied_slots(const WideBvhNode<W>& node) {
     return static_cast<unsigned>(less_equal_mask(F::load(node.lo[0]), F::load(node.hi[0])));
+  }
+
+ private:
+  // The W floats at byte `offset` of `node`: one plane of the children's boxes.
+  static F plane(const WideBvhNode<W>& node, std::uint32_t offset) {
+    return F::load(reinterpret_cast<const float*>(reinterpret_cast<const unsigned char*>(&node) + offset));
+  }
+  // The offsets of axis `axis`'s near and far planes for a direction component of sign `negative`.
+  static void plane_offsets(bool negative, int axis, std::uint32_t& near, std::uint32_t& far) {
+    const auto lo = static_cast<std::uint32_t>(offsetof(WideBvhNode<W>, lo) + sizeof(float) * W * axis);
+    const auto hi = static_cast<std::uint32_t>(offsetof(WideBvhNode<W>, hi) + sizeof(float) * W * axis);
+    near = negative ? hi : lo;
+    far = negative ? lo : hi;
   }
 };
 

@@ -68,8 +68,8 @@ void compare(const TriangleBlock4& block, int lane, const std::vector<Ray>& rays
   for (int i = 0; i < kLanes; ++i) {
     ++tally.lanes;
     float rt = 0.f, ru = 0.f, rv = 0.f;
-    const bool ref = intersect_triangle(tri, WatertightRay(rays[i]), tmin[i], std::nextafter(tmax[i], INFINITY), rt,
-                                        ru, rv);
+    const bool ref =
+        intersect_triangle(tri, WatertightRay(rays[i]), tmin[i], std::nextafter(tmax[i], INFINITY), rt, ru, rv);
     const bool got = (mask >> i) & 1u;
     ASSERT_EQ(got, ref) << "ray lane " << i << ": kernel " << got << ", scalar " << ref << " (t " << rt << ")";
     if (!ref) continue;
@@ -82,7 +82,8 @@ void compare(const TriangleBlock4& block, int lane, const std::vector<Ray>& rays
 }
 
 Vec3 random_point(Pcg32& rng, float scale) {
-  return {(rng.next_float() * 2.f - 1.f) * scale, (rng.next_float() * 2.f - 1.f) * scale, (rng.next_float() * 2.f - 1.f) * scale};
+  return {(rng.next_float() * 2.f - 1.f) * scale, (rng.next_float() * 2.f - 1.f) * scale,
+          (rng.next_float() * 2.f - 1.f) * scale};
 }
 
 // kLanes rays from near `origin` toward points near `target`, as a pixel tile's or a shadow

@@ -2,8 +2,8 @@
 /// \file
 /// The wide BVH ("bvh"): the binned SAH tree collapsed to W-wide nodes (W = 4, 8 or 16) whose
 /// children's boxes one SIMD instruction per plane tests together, with leaves of triangles stored
-/// four to a block and tested with SIMD, other primitives listed by id. Single-ray traversal is ordered by the ray's
-/// octant and by distance; packets of rays share the walk (wide_bvh_packet.cpp).
+/// four to a block and tested with SIMD, other primitives listed by id. Single-ray traversal visits
+/// children nearest first; packets of rays share the walk (wide_bvh_packet.cpp).
 
 #include <cstdint>
 #include <span>
@@ -131,8 +131,6 @@ class WideBvh final : public Accelerator {
  private:
   template <bool kAnyHit, bool kCount>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
-  template <bool kAnyHit, bool kCount, int kOctant>
-  bool traverse_octant(Ray& ray, Hit& hit, TraversalStats* stats) const;
   template <bool kAnyHit>
   void trace_packet(Ray* rays, Hit* hits, std::uint8_t* occluded, int n) const;
   template <bool kAnyHit, int kOctant>

@@ -38,6 +38,21 @@ struct WatertightRay {
   }
 };
 
+/// Whether some of three edge functions is negative and some positive: the ray passes beside the
+/// triangle (NaN is neither).
+inline bool edge_signs_differ(float e0, float e1, float e2) {
+  return (e0 < 0.f || e1 < 0.f || e2 < 0.f) && (e0 > 0.f || e1 > 0.f || e2 > 0.f);
+}
+
+/// Whether the edge functions p0 - q0, p1 - q1, p2 - q2, given by their products rounded to
+/// float, surely have both signs. Rounding is monotone, so fl(p) < fl(q) implies p < q exactly
+/// and fl(p) > fl(q) implies p > q (where float cannot tell, neither holds): a triangle this
+/// rejects, the exact test rejects too. Products are compared, not subtracted, so that no FMA
+/// contraction can round one of them and not the other.
+inline bool beside_in_float(float p0, float q0, float p1, float q1, float p2, float q2) {
+  return (p0 < q0 || p1 < q1 || p2 < q2) && (p0 > q0 || p1 > q1 || p2 > q2);
+}
+
 /// Tests `tri` against the ray described by `wr`, accepting hits with tmin <= t < tmax.
 /// Watertight: a ray through an edge or vertex shared by two triangles hits at least one of them
 /// (edge functions are evaluated with exact products, so their signs are exact). On a hit writes `t`
@@ -53,6 +68,9 @@ inline bool intersect_triangle(const Triangle& tri, const WatertightRay& wr, flo
   const float by = b[wr.ky] - wr.sy * b[wr.kz];
   const float cx = c[wr.kx] - wr.sx * c[wr.kz];
   const float cy = c[wr.ky] - wr.sy * c[wr.kz];
+  // A filter in float first: most triangles a ray is tested against lie beside it, and the
+  // products of the edge functions in float show that, exactly (see beside_in_float).
+  if (beside_in_float(cx * by, cy * bx, ax * cy, ay * cx, bx * ay, by * ax)) return false;
   // Edge functions with exact products (a product of two floats fits in a double), so each sign
   // is exact and a shared edge gets exactly opposite values in its two triangles. In float,
   // `cx * by - cy * bx` is contracted to fma(cx, by, -(cy * bx)) where FMA is available (GCC's
@@ -61,7 +79,7 @@ inline bool intersect_triangle(const Triangle& tri, const WatertightRay& wr, flo
   const float e0 = static_cast<float>(double(cx) * double(by) - double(cy) * double(bx));  // weight of p0
   const float e1 = static_cast<float>(double(ax) * double(cy) - double(ay) * double(cx));  // weight of p1
   const float e2 = static_cast<float>(double(bx) * double(ay) - double(by) * double(ax));  // weight of p2
-  if ((e0 < 0.f || e1 < 0.f || e2 < 0.f) && (e0 > 0.f || e1 > 0.f || e2 > 0.f)) return false;
+  if (edge_signs_differ(e0, e1, e2)) return false;
   const float det = e0 + e1 + e2;
   if (det == 0.f) return false;
   const float az = wr.sz * a[wr.kz];

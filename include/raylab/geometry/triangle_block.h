@@ -15,8 +15,10 @@
 namespace raylab {
 
 /// Four triangles, structure of arrays: `p[vertex][axis][lane]`, and the primitive id of each
-/// lane. An unused lane has id kNoPrimitive and all vertices at the origin (a degenerate
-/// triangle, which the test never reports as hit). 160 bytes.
+/// lane. An unused lane has id kNoPrimitive, which callers skip; its vertices are all at the
+/// origin (a degenerate triangle, never hit) or, after `repeat_first_lane`, lane 0's triangle
+/// again, which costs the test nothing extra (a lane at the origin passes the test's float
+/// filter, and so sends every ray on to the exact edge functions). 160 bytes.
 struct alignas(16) TriangleBlock4 {
   /// The id of an unused lane.
   static constexpr std::uint32_t kNoPrimitive = std::numeric_limits<std::uint32_t>::max();
@@ -31,6 +33,16 @@ struct alignas(16) TriangleBlock4 {
       for (int a = 0; a < 3; ++a) p[k][a][lane] = (*v[k])[a];
     }
     id[lane] = prim_id;
+  }
+  /// Gives the unused lanes lane 0's vertices (their ids stay kNoPrimitive), so that the test
+  /// of the block needs the exact edge functions only when lane 0 does. Lane 0 must be used.
+  void repeat_first_lane() {
+    for (int lane = 1; lane < 4; ++lane) {
+      if (id[lane] != kNoPrimitive) continue;
+      for (int k = 0; k < 3; ++k) {
+        for (int a = 0; a < 3; ++a) p[k][a][lane] = p[k][a][0];
+      }
+    }
   }
   /// Triangle of lane `lane`.
   Triangle triangle(int lane) const {
@@ -52,9 +64,9 @@ inline TriangleBlock4 empty_triangle_block() {
 
 /// The watertight test of `intersect_triangle` on the four lanes of `block`. Returns a bit mask
 /// of the lanes hit with tmin <= t <= tmax (note: `<=`, so the caller can apply the exact
-/// `t < tie_limit` rule lane by lane), and their t, u, v. Lanes that are unused or degenerate
-/// are never set. Lanes are not checked against the primitive kind: the caller skips lanes whose
-/// id is not a triangle's.
+/// `t < tie_limit` rule lane by lane), and their t, u, v. Degenerate lanes (unused ones at the
+/// origin among them) are never set; an unused lane that repeats lane 0 answers as lane 0. Lanes
+/// are not checked against their ids: the caller skips kNoPrimitive and ids of other kinds.
 inline int intersect_triangle_block(const TriangleBlock4& block, const WatertightRay& wr, float tmin, float tmax,
                                     float t_out[4], float u_out[4], float v_out[4]) {
   using simd::Double4;
@@ -68,13 +80,21 @@ inline int intersect_triangle_block(const TriangleBlock4& block, const Watertigh
   const Float4 ax = rel(0, wr.kx, ox) - sx * akz, ay = rel(0, wr.ky, oy) - sy * akz;
   const Float4 bx = rel(1, wr.kx, ox) - sx * bkz, by = rel(1, wr.ky, oy) - sy * bkz;
   const Float4 cx = rel(2, wr.kx, ox) - sx * ckz, cy = rel(2, wr.ky, oy) - sy * ckz;
+  const Float4 zero = Float4::broadcast(0.f);
+  // The float filter of intersect_triangle, four lanes at once: lanes it rejects are rejected by
+  // the exact test too, and when it rejects all four (the common case) the block is done.
+  {
+    const Float4 p0 = cx * by, q0 = cy * bx, p1 = ax * cy, q1 = ay * cx, p2 = bx * ay, q2 = by * ax;
+    const int negative = less_mask(p0, q0) | less_mask(p1, q1) | less_mask(p2, q2);
+    const int positive = less_mask(q0, p0) | less_mask(q1, p1) | less_mask(q2, p2);
+    if ((negative & positive & 0xF) == 0xF) return 0;
+  }
   // Edge functions with exact products, rounded once to float, as in intersect_triangle.
   const Double4 dax = Double4::from(ax), day = Double4::from(ay), dbx = Double4::from(bx), dby = Double4::from(by),
                 dcx = Double4::from(cx), dcy = Double4::from(cy);
   const Float4 e0 = (dcx * dby - dcy * dbx).to_float();
   const Float4 e1 = (dax * dcy - day * dcx).to_float();
   const Float4 e2 = (dbx * day - dby * dax).to_float();
-  const Float4 zero = Float4::broadcast(0.f);
   const int any_negative = less_mask(e0, zero) | less_mask(e1, zero) | less_mask(e2, zero);
   const int any_positive = less_mask(zero, e0) | less_mask(zero, e1) | less_mask(zero, e2);
   const Float4 det = e0 + e1 + e2;

@@ -35,15 +35,23 @@ inline unsigned intersect_triangle_rays(const TriangleBlock4& block, int lane, c
   const F ax = rel(0, rays.kx, rays.ox) - rays.sx * akz, ay = rel(0, rays.ky, rays.oy) - rays.sy * akz;
   const F bx = rel(1, rays.kx, rays.ox) - rays.sx * bkz, by = rel(1, rays.ky, rays.oy) - rays.sy * bkz;
   const F cx = rel(2, rays.kx, rays.ox) - rays.sx * ckz, cy = rel(2, rays.ky, rays.oy) - rays.sy * ckz;
+  constexpr unsigned kAll = N >= 32 ? ~0u : (1u << N) - 1u;
+  const F zero = F::broadcast(0.f);
+  // The float filter of intersect_triangle, one lane per ray: when it rejects every ray (the
+  // common case), the triangle is done.
+  {
+    const F p0 = cx * by, q0 = cy * bx, p1 = ax * cy, q1 = ay * cx, p2 = bx * ay, q2 = by * ax;
+    const unsigned negative = less_mask(p0, q0) | less_mask(p1, q1) | less_mask(p2, q2);
+    const unsigned positive = less_mask(q0, p0) | less_mask(q1, p1) | less_mask(q2, p2);
+    if ((negative & positive & kAll) == kAll) return 0;
+  }
   // Edge functions with exact products, rounded once to float, as in intersect_triangle.
   const F e0 = difference_of_products(cx, by, cy, bx);
   const F e1 = difference_of_products(ax, cy, ay, cx);
   const F e2 = difference_of_products(bx, ay, by, ax);
-  const F zero = F::broadcast(0.f);
   const unsigned any_negative = less_mask(e0, zero) | less_mask(e1, zero) | less_mask(e2, zero);
   const unsigned any_positive = less_mask(zero, e0) | less_mask(zero, e1) | less_mask(zero, e2);
   const F det = e0 + e1 + e2;
-  constexpr unsigned kAll = N >= 32 ? ~0u : (1u << N) - 1u;
   unsigned mask = ~(any_negative & any_positive) & ~equal_mask(det, zero) & kAll;
   if (mask == 0) return 0;
   const F rcp = F::broadcast(1.f) / det;
