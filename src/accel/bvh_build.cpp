@@ -239,25 +239,30 @@ ObjectSplit small_object_split(const BuildRef* refs, std::uint32_t count, const 
   }
   float right_area[kSmallNode];
   for (int axis = 0; axis < 3; ++axis) {
-    // Indices ordered by bin (insertion sort: count is small).
+    // Indices ordered by bin, stably (equal bins keep index order), each placed at its rank:
+    // the number of references before it. Branch-free on purpose: an insertion sort here
+    // mispredicted about once per reference, a fifth of all the build's mispredictions.
     const int* b = bin[axis];
     std::uint8_t order[kSmallNode];
     for (std::uint32_t i = 0; i < count; ++i) {
-      std::uint32_t j = i;
-      for (; j > 0 && b[order[j - 1]] > b[i]; --j) order[j] = order[j - 1];
-      order[j] = static_cast<std::uint8_t>(i);
+      std::uint32_t rank = 0;
+      for (std::uint32_t j = 0; j < count; ++j) rank += (b[j] < b[i]) | ((b[j] == b[i]) & (j < i));
+      order[rank] = static_cast<std::uint8_t>(i);
     }
     if (b[order[0]] == b[order[count - 1]]) continue;  // one occupied bin: no split on this axis
+    // The sweeps evaluate every position and discard those that are no boundary between bins,
+    // again without branching on the bins.
     Box4 acc;
     for (std::uint32_t k = count - 1; k > 0; --k) {
       acc.extend(lo[order[k]], hi[order[k]]);
-      if (b[order[k - 1]] != b[order[k]]) right_area[k] = area(acc);  // only boundaries are read
+      right_area[k] = area(acc);  // read at boundaries only
     }
     acc = Box4{};
     for (std::uint32_t k = 0; k + 1 < count; ++k) {
       acc.extend(lo[order[k]], hi[order[k]]);
-      if (b[order[k]] == b[order[k + 1]]) continue;  // not a boundary between bins
-      const float c = cost.split_areas(area(acc), k + 1, right_area[k + 1], count - k - 1);
+      const bool boundary = b[order[k]] != b[order[k + 1]];
+      const float split = cost.split_areas(area(acc), k + 1, right_area[k + 1], count - k - 1);
+      const float c = boundary ? split : INFINITY;
       if (c < best_areas) {
         best.axis = axis;
         best.bin = b[order[k]] + 1;

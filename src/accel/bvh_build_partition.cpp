@@ -11,6 +11,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -38,14 +39,37 @@ float SplitTest::threshold() const {
   if (!(scale > 0.f)) return bin > 0 ? INFINITY : -INFINITY;  // one bin, bin 0
   if (bin_of(hi) < bin) return INFINITY;                      // all left
   if (bin_of(lo) >= bin) return -INFINITY;                    // all right
-  // The least float of (lo, hi] in bin `bin` or above, by bisection over the floats in order:
-  // bin_of grows with its argument. (Stepping float by float from the plane the bins were laid
-  // out with is not bounded: near zero, one rounding step of a large `lo` spans billions of
-  // floats.) Invariant: bin_of(from(below)) < bin <= bin_of(from(above)).
-  std::int64_t below = ordered_key(lo), above = ordered_key(hi);
+  // The least float of (lo, hi] in bin `bin` or above, bin_of growing with its argument. The
+  // plane the bins were laid out with is within a few floats of it, so the search brackets it
+  // from there with steps doubling in the floats' order, then bisects the bracket. (Stepping
+  // float by float is not bounded: near zero, one rounding step of a large `lo` spans billions
+  // of floats.) Invariant: bin_of(from(below)) < bin <= bin_of(from(above)).
+  const std::int64_t lo_key = ordered_key(lo), hi_key = ordered_key(hi);
+  const std::int64_t guess = std::clamp(ordered_key(lo + static_cast<float>(bin) / scale), lo_key, hi_key);
+  auto right_of = [&](std::int64_t k) { return bin_of(from_ordered_key(k)) >= bin; };
+  std::int64_t below = lo_key, above = hi_key;
+  if (right_of(guess)) {
+    above = guess;
+    for (std::int64_t step = 1; above - step > lo_key; step *= 2) {
+      if (!right_of(above - step)) {
+        below = above - step;
+        break;
+      }
+      above -= step;
+    }
+  } else {
+    below = guess;
+    for (std::int64_t step = 1; below + step < hi_key; step *= 2) {
+      if (right_of(below + step)) {
+        above = below + step;
+        break;
+      }
+      below += step;
+    }
+  }
   while (above - below > 1) {
     const std::int64_t mid = below + (above - below) / 2;
-    if (bin_of(from_ordered_key(mid)) >= bin) {
+    if (right_of(mid)) {
       above = mid;
     } else {
       below = mid;
