@@ -246,7 +246,8 @@ ObjectSplit small_object_split(const BuildRef* refs, std::uint32_t count, const 
     std::uint8_t order[kSmallNode];
     for (std::uint32_t i = 0; i < count; ++i) {
       std::uint32_t rank = 0;
-      for (std::uint32_t j = 0; j < count; ++j) rank += (b[j] < b[i]) | ((b[j] == b[i]) & (j < i));
+      for (std::uint32_t j = 0; j < count; ++j)
+        rank += static_cast<std::uint32_t>(int(b[j] < b[i]) | (int(b[j] == b[i]) & int(j < i)));
       order[rank] = static_cast<std::uint8_t>(i);
     }
     if (b[order[0]] == b[order[count - 1]]) continue;  // one occupied bin: no split on this axis

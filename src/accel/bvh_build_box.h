@@ -38,9 +38,9 @@ inline float area(const Box4& b) {
   (b.hi - b.lo).store(e);  // one subtraction and one store instead of three and two
   // Without a branch: the split search sweeps over bins, empty or not in no predictable order,
   // and a branch here mispredicted about once in forty calls.
-  const bool nonempty = (e[0] >= 0.f) & (e[1] >= 0.f) & (e[2] >= 0.f);
+  const int nonempty = int(e[0] >= 0.f) & int(e[1] >= 0.f) & int(e[2] >= 0.f);
   const float a = 2.f * (e[0] * e[1] + e[1] * e[2] + e[2] * e[0]);
-  return nonempty ? a : 0.f;
+  return nonempty != 0 ? a : 0.f;
 }
 
 /// A reference's box minimum as four floats (the fourth is its id's bits, ignored).
