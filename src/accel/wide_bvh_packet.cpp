@@ -317,8 +317,8 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
       for (std::uint32_t m = active; m != 0; m &= m - 1) {
         const int i = std::countr_zero(m);
         Ray& r = rays[i];
-        if (walk_wide_bvh<kAnyHit, false, W>(m_tree, m_geometry, current.node, WideBoxRay<W>(r), tri_rays[i], r,
-                                             tmax[i], best[i], nodes_visited, prim_tests)) {
+        if (walk_wide_bvh<kAnyHit, false, false, W>(m_tree, m_geometry, current.node, WideBoxRay<W>(r), tri_rays[i], r,
+                                                    tmax[i], best[i], nodes_visited, prim_tests)) {
           found |= 1u << i;
           if constexpr (kAnyHit) alive &= ~(1u << i);
         }
