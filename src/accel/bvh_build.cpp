@@ -23,6 +23,7 @@
 #include "bvh_build_box.h"
 #include "bvh_build_partition.h"
 #include "bvh_build_ref.h"
+#include "bvh_build_unordered.h"
 #include "raylab/accel/bvh.h"
 #include "raylab/simd/float4.h"
 
@@ -575,16 +576,24 @@ BvhTree build_bvh(const Geometry& geometry, std::span<const std::uint32_t> ids, 
     tree.nodes.push_back(empty);  // an empty leaf whose box no ray can enter
     return tree;
   }
+  const UnorderedBvh built = build_bvh_unordered(geometry, ids, config);
+  relayout_depth_first(built.nodes.get(), built.node_count, built.refs.get(), tree);
+  return tree;
+}
+
+UnorderedBvh build_bvh_unordered(const Geometry& geometry, std::span<const std::uint32_t> ids,
+                                 const BvhConfig& config) {
+  const auto n = static_cast<std::uint32_t>(ids.size());
   // Spatial splits get room for extra references; node slots: at most two per reference.
   const double budget = config.spatial_splits ? std::clamp(double(config.spatial_split_budget), 0.0, 4.0) : 0.0;
   const auto capacity = static_cast<std::uint32_t>(n + std::floor(budget * n));
   // Default-initialised (not zeroed): every slot that is read is written first.
-  std::unique_ptr<BuildRef[]> refs(new BuildRef[capacity]);
-  std::unique_ptr<BvhNode[]> nodes(new BvhNode[2 * std::size_t{capacity}]);
-  const Bounds bounds = make_refs(geometry, ids, refs.get());
-  const std::uint32_t node_count = Builder(geometry, config, refs.get(), nodes.get()).build(n, capacity, bounds);
-  relayout_depth_first(nodes.get(), node_count, refs.get(), tree);
-  return tree;
+  UnorderedBvh built;
+  built.refs.reset(new BuildRef[capacity]);
+  built.nodes.reset(new BvhNode[2 * std::size_t{capacity}]);
+  const Bounds bounds = make_refs(geometry, ids, built.refs.get());
+  built.node_count = Builder(geometry, config, built.refs.get(), built.nodes.get()).build(n, capacity, bounds);
+  return built;
 }
 
 double sah_cost(const BvhTree& tree, const BvhConfig& config) {

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "wide_bvh_collapse.h"
 #include "wide_bvh_walk.h"
 
 namespace raylab {
@@ -18,10 +19,16 @@ template <int W>
 WideBvh<W>::WideBvh(const Geometry& geometry, std::span<const std::uint32_t> ids, const BvhConfig& config)
     : m_geometry(geometry) {
   const auto start = std::chrono::steady_clock::now();
-  const BvhTree tree = build_bvh(geometry, ids, build_config(config));
-  m_tree = collapse_to_wide<W>(tree, geometry);
-  const BvhNode& root = tree.nodes[0];
-  if (!tree.prim_ids.empty()) m_bounds = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
+  if (ids.empty()) {
+    m_tree = collapse_to_wide<W>(build_bvh(geometry, ids, build_config(config)), geometry);
+  } else {
+    // The builder's tree as it comes, without build_bvh's depth-first relayout: the collapse
+    // lays the wide tree out itself.
+    const UnorderedBvh tree = build_bvh_unordered(geometry, ids, build_config(config));
+    m_tree = collapse_to_wide<W>(tree, geometry);
+    const BvhNode& root = tree.nodes[0];
+    m_bounds = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
+  }
   m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "raylab/accel/wide_bvh.h"
+#include "wide_bvh_collapse.h"
 
 namespace raylab {
 namespace {
@@ -20,17 +20,27 @@ float node_area(const BvhNode& n) {
   return 2.f * (ex * ey + ey * ez + ez * ex);
 }
 
-template <int W>
+// The binary tree a collapse reads: `build_bvh`'s laid-out tree, or the builder's unordered one.
+// Node slots [0, node_count) are all used; prim(i) is the primitive id of leaf reference i.
+template <class PrimOf>
+struct BinarySource {
+  const BvhNode* nodes;
+  std::size_t node_count;
+  bool empty;  // no primitives at all
+  PrimOf prim;
+};
+
+template <int W, class PrimOf>
 class WideCollapser {
  public:
-  WideCollapser(const BvhTree& tree, const Geometry& geometry) : m_tree(tree), m_geometry(geometry) {}
+  WideCollapser(const BinarySource<PrimOf>& tree, const Geometry& geometry) : m_tree(tree), m_geometry(geometry) {}
 
   WideBvhTree<W> run() {
     WideBvhLeaves& leaves = m_out.leaves;
     leaves.triangle_count = static_cast<std::uint32_t>(m_geometry.triangles.size());
-    m_out.nodes.reserve(m_tree.nodes.size() / (W - 1) + 1);
+    m_out.nodes.reserve(m_tree.node_count / (W - 1) + 1);
     size_leaves();
-    if (m_tree.prim_ids.empty()) {
+    if (m_tree.empty) {
       m_out.nodes.push_back(empty_node());  // nothing to hold: every slot empty
     } else if (m_tree.nodes[0].is_leaf()) {
       m_out.nodes.push_back(empty_node());
@@ -57,7 +67,7 @@ class WideCollapser {
   // The split of binary leaf `b`.
   LeafSplit split_of(const BvhNode& b) const {
     std::uint32_t triangles = 0;
-    for (std::uint32_t i = 0; i < b.count; ++i) triangles += is_triangle(m_tree.prim_ids[b.first + i]) ? 1 : 0;
+    for (std::uint32_t i = 0; i < b.count; ++i) triangles += is_triangle(m_tree.prim(b.first + i)) ? 1 : 0;
     LeafSplit split;
     split.block_triangles = triangles;
     split.other_ids = b.count - triangles;
@@ -72,7 +82,8 @@ class WideCollapser {
   // (their starts must fit in the bits of `count` above the block count).
   void size_leaves() {
     std::size_t blocks = 0, mixed = 0, others = 0;
-    for (const BvhNode& b : m_tree.nodes) {
+    for (std::size_t i = 0; i < m_tree.node_count; ++i) {
+      const BvhNode& b = m_tree.nodes[i];
       if (!b.is_leaf()) continue;
       const LeafSplit split = split_of(b);
       blocks += split.blocks();
@@ -125,7 +136,7 @@ class WideCollapser {
     }
     std::uint32_t lane = 0;
     for (std::uint32_t i = 0; i < b.count; ++i) {
-      const std::uint32_t id = m_tree.prim_ids[b.first + i];
+      const std::uint32_t id = m_tree.prim(b.first + i);
       if (is_triangle(id) && lane < split.block_triangles) {
         if (lane % 4 == 0) leaves.blocks.push_back(empty_triangle_block());
         leaves.blocks.back().id[lane % 4] = id;  // vertices: fill_blocks
@@ -207,7 +218,7 @@ class WideCollapser {
     return index;
   }
 
-  const BvhTree& m_tree;
+  const BinarySource<PrimOf>& m_tree;
   const Geometry& m_geometry;
   WideBvhTree<W> m_out;
   std::uint32_t m_mixed_end = 0;   // end of the `others` written by leaves holding both kinds
@@ -218,11 +229,25 @@ class WideCollapser {
 
 template <int W>
 WideBvhTree<W> collapse_to_wide(const BvhTree& tree, const Geometry& geometry) {
-  return WideCollapser<W>(tree, geometry).run();
+  const std::uint32_t* ids = tree.prim_ids.data();
+  auto prim = [ids](std::size_t i) { return ids[i]; };
+  const BinarySource<decltype(prim)> source{tree.nodes.data(), tree.nodes.size(), tree.prim_ids.empty(), prim};
+  return WideCollapser<W, decltype(prim)>(source, geometry).run();
+}
+
+template <int W>
+WideBvhTree<W> collapse_to_wide(const UnorderedBvh& tree, const Geometry& geometry) {
+  const bvh_build::BuildRef* refs = tree.refs.get();
+  auto prim = [refs](std::size_t i) { return refs[i].id; };
+  const BinarySource<decltype(prim)> source{tree.nodes.get(), tree.node_count, tree.node_count == 0, prim};
+  return WideCollapser<W, decltype(prim)>(source, geometry).run();
 }
 
 template WideBvhTree<4> collapse_to_wide<4>(const BvhTree&, const Geometry&);
 template WideBvhTree<8> collapse_to_wide<8>(const BvhTree&, const Geometry&);
 template WideBvhTree<16> collapse_to_wide<16>(const BvhTree&, const Geometry&);
+template WideBvhTree<4> collapse_to_wide<4>(const UnorderedBvh&, const Geometry&);
+template WideBvhTree<8> collapse_to_wide<8>(const UnorderedBvh&, const Geometry&);
+template WideBvhTree<16> collapse_to_wide<16>(const UnorderedBvh&, const Geometry&);
 
 }  // namespace raylab

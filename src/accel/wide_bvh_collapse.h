@@ -1,0 +1,16 @@
+#pragma once
+/// \file
+/// Internal to src/accel: collapsing the builder's unordered binary tree straight into a wide
+/// tree (the public `collapse_to_wide` takes `build_bvh`'s laid-out tree; both give the same
+/// wide tree for the same build).
+
+#include "bvh_build_unordered.h"
+#include "raylab/accel/wide_bvh.h"
+
+namespace raylab {
+
+/// As collapse_to_wide(build_bvh(...), geometry) for the build that produced `tree`.
+template <int W>
+WideBvhTree<W> collapse_to_wide(const UnorderedBvh& tree, const Geometry& geometry);
+
+}  // namespace raylab
