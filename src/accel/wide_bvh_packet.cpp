@@ -143,31 +143,6 @@ bool directions_coherent(const Ray* rays, int n) {
   return true;
 }
 
-/// The watertight constants of kRayLanes rays (which share one axis permutation) as lanes.
-WatertightRays<kRayLanes> watertight_rays(const WatertightRay* r) {
-  using L = simd::WideFloat<kRayLanes>;
-  alignas(64) float lanes[6][kRayLanes];
-  for (int i = 0; i < kRayLanes; ++i) {
-    lanes[0][i] = r[i].origin[r[0].kx];
-    lanes[1][i] = r[i].origin[r[0].ky];
-    lanes[2][i] = r[i].origin[r[0].kz];
-    lanes[3][i] = r[i].sx;
-    lanes[4][i] = r[i].sy;
-    lanes[5][i] = r[i].sz;
-  }
-  WatertightRays<kRayLanes> w;
-  w.kx = r[0].kx;
-  w.ky = r[0].ky;
-  w.kz = r[0].kz;
-  w.ox = L::load(lanes[0]);
-  w.oy = L::load(lanes[1]);
-  w.oz = L::load(lanes[2]);
-  w.sx = L::load(lanes[3]);
-  w.sy = L::load(lanes[4]);
-  w.sz = L::load(lanes[5]);
-  return w;
-}
-
 /// A subtree waiting to be visited by the rays in `rays` (bit i: lane i), entered by the
 /// nearest of them at `t`.
 struct PacketStackEntry {
@@ -216,7 +191,7 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
   }
   WatertightRays<kRayLanes> group_rays[kGroups];
   if (same_axes) {
-    for (int g = 0; g < kGroups; ++g) group_rays[g] = watertight_rays(tri_rays + g * kRayLanes);
+    for (int g = 0; g < kGroups; ++g) group_rays[g] = watertight_rays<kRayLanes>(tri_rays + g * kRayLanes);
   }
 
   // Bit mask of the lanes of group g that enter child c of `node` within their own

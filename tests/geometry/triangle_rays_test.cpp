@@ -25,27 +25,11 @@ std::uint32_t bits(float x) { return std::bit_cast<std::uint32_t>(x); }
 
 // Lanes of `rays`' watertight constants; false when they do not share one axis permutation.
 bool make_lanes(const std::vector<Ray>& rays, WatertightRays<kLanes>& out) {
-  alignas(64) float lanes[6][kLanes];
-  const WatertightRay first(rays[0]);
-  for (int i = 0; i < kLanes; ++i) {
-    const WatertightRay w(rays[i]);
-    if (w.kx != first.kx || w.ky != first.ky || w.kz != first.kz) return false;
-    lanes[0][i] = w.origin[w.kx];
-    lanes[1][i] = w.origin[w.ky];
-    lanes[2][i] = w.origin[w.kz];
-    lanes[3][i] = w.sx;
-    lanes[4][i] = w.sy;
-    lanes[5][i] = w.sz;
+  std::vector<WatertightRay> w(rays.begin(), rays.end());
+  for (const WatertightRay& x : w) {
+    if (x.kx != w[0].kx || x.ky != w[0].ky || x.kz != w[0].kz) return false;
   }
-  out.kx = first.kx;
-  out.ky = first.ky;
-  out.kz = first.kz;
-  out.ox = Lanes::load(lanes[0]);
-  out.oy = Lanes::load(lanes[1]);
-  out.oz = Lanes::load(lanes[2]);
-  out.sx = Lanes::load(lanes[3]);
-  out.sy = Lanes::load(lanes[4]);
-  out.sz = Lanes::load(lanes[5]);
+  out = watertight_rays<kLanes>(w.data());
   return true;
 }
 

@@ -62,6 +62,42 @@ inline TriangleBlock4 empty_triangle_block() {
   return b;
 }
 
+/// The float filter of `intersect_triangle` lane by lane, from the sheared vertices (a, b, c on
+/// the permuted x and y axes): the mask of lanes whose ray surely passes beside the triangle
+/// (see `beside_in_float`). Shared by the block and the ray-parallel kernels.
+template <class F>
+inline auto lanes_beside(const F& ax, const F& ay, const F& bx, const F& by, const F& cx, const F& cy) {
+  const F p0 = cx * by, q0 = cy * bx, p1 = ax * cy, q1 = ay * cx, p2 = bx * ay, q2 = by * ax;
+  const auto negative = less_mask(p0, q0) | less_mask(p1, q1) | less_mask(p2, q2);
+  const auto positive = less_mask(q0, p0) | less_mask(q1, p1) | less_mask(q2, p2);
+  return negative & positive;
+}
+
+/// The end of the watertight test lane by lane, shared by the block and the ray-parallel
+/// kernels, with the operations of `intersect_triangle` in its order: from the exact edge
+/// functions e0, e1, e2 and the sheared z of the vertices (az, bz, cz), the mask of the lanes
+/// among `lanes` whose ray crosses the triangle (no two signs differ, det != 0) at
+/// tmin <= t <= tmax, their t, u, v stored to t_out, u_out, v_out.
+template <class F, class Mask>
+inline Mask finish_watertight(Mask lanes, const F& e0, const F& e1, const F& e2, const F& az, const F& bz, const F& cz,
+                              const F& tmin, const F& tmax, float* t_out, float* u_out, float* v_out) {
+  const F zero = F::broadcast(0.f);
+  const Mask any_negative = less_mask(e0, zero) | less_mask(e1, zero) | less_mask(e2, zero);
+  const Mask any_positive = less_mask(zero, e0) | less_mask(zero, e1) | less_mask(zero, e2);
+  const F det = e0 + e1 + e2;
+  Mask mask = ~(any_negative & any_positive) & ~equal_mask(det, zero) & lanes;
+  if (mask == 0) return 0;
+  const F rcp = F::broadcast(1.f) / det;
+  const F th = (e0 * az + e1 * bz + e2 * cz) * rcp;
+  // tmin <= th <= tmax, false for NaN.
+  mask &= less_equal_mask(tmin, th) & less_equal_mask(th, tmax);
+  if (mask == 0) return 0;
+  th.store(t_out);
+  (e1 * rcp).store(u_out);
+  (e2 * rcp).store(v_out);
+  return mask;
+}
+
 /// The watertight test of `intersect_triangle` on the four lanes of `block`. Returns a bit mask
 /// of the lanes hit with tmin <= t <= tmax (note: `<=`, so the caller can apply the exact
 /// `t < tie_limit` rule lane by lane), and their t, u, v. Degenerate lanes (unused ones at the
@@ -80,35 +116,17 @@ inline int intersect_triangle_block(const TriangleBlock4& block, const Watertigh
   const Float4 ax = rel(0, wr.kx, ox) - sx * akz, ay = rel(0, wr.ky, oy) - sy * akz;
   const Float4 bx = rel(1, wr.kx, ox) - sx * bkz, by = rel(1, wr.ky, oy) - sy * bkz;
   const Float4 cx = rel(2, wr.kx, ox) - sx * ckz, cy = rel(2, wr.ky, oy) - sy * ckz;
-  const Float4 zero = Float4::broadcast(0.f);
-  // The float filter of intersect_triangle, four lanes at once: lanes it rejects are rejected by
-  // the exact test too, and when it rejects all four (the common case) the block is done.
-  {
-    const Float4 p0 = cx * by, q0 = cy * bx, p1 = ax * cy, q1 = ay * cx, p2 = bx * ay, q2 = by * ax;
-    const int negative = less_mask(p0, q0) | less_mask(p1, q1) | less_mask(p2, q2);
-    const int positive = less_mask(q0, p0) | less_mask(q1, p1) | less_mask(q2, p2);
-    if ((negative & positive & 0xF) == 0xF) return 0;
-  }
+  // The float filter, four lanes at once: lanes it rejects are rejected by the exact test too,
+  // and when it rejects all four (the common case) the block is done.
+  if ((lanes_beside(ax, ay, bx, by, cx, cy) & 0xF) == 0xF) return 0;
   // Edge functions with exact products, rounded once to float, as in intersect_triangle.
   const Double4 dax = Double4::from(ax), day = Double4::from(ay), dbx = Double4::from(bx), dby = Double4::from(by),
                 dcx = Double4::from(cx), dcy = Double4::from(cy);
   const Float4 e0 = (dcx * dby - dcy * dbx).to_float();
   const Float4 e1 = (dax * dcy - day * dcx).to_float();
   const Float4 e2 = (dbx * day - dby * dax).to_float();
-  const int any_negative = less_mask(e0, zero) | less_mask(e1, zero) | less_mask(e2, zero);
-  const int any_positive = less_mask(zero, e0) | less_mask(zero, e1) | less_mask(zero, e2);
-  const Float4 det = e0 + e1 + e2;
-  int mask = ~(any_negative & any_positive) & ~equal_mask(det, zero) & 0xF;
-  if (mask == 0) return 0;
-  const Float4 rcp = Float4::broadcast(1.f) / det;
-  const Float4 th = (e0 * (sz * akz) + e1 * (sz * bkz) + e2 * (sz * ckz)) * rcp;
-  // tmin <= th <= tmax, false for NaN.
-  mask &= less_equal_mask(Float4::broadcast(tmin), th) & less_equal_mask(th, Float4::broadcast(tmax));
-  if (mask == 0) return 0;
-  th.store(t_out);
-  (e1 * rcp).store(u_out);
-  (e2 * rcp).store(v_out);
-  return mask;
+  return finish_watertight(0xF, e0, e1, e2, sz * akz, sz * bkz, sz * ckz, Float4::broadcast(tmin),
+                           Float4::broadcast(tmax), t_out, u_out, v_out);
 }
 
 }  // namespace raylab

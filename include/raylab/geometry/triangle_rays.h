@@ -20,6 +20,32 @@ struct WatertightRays {
   F sx, sy, sz;  ///< as WatertightRay::sx, sy, sz
 };
 
+/// The constants of the N rays `r[0..N)` as lanes. They must share r[0]'s axis permutation.
+template <int N>
+inline WatertightRays<N> watertight_rays(const WatertightRay* r) {
+  using F = simd::WideFloat<N>;
+  alignas(64) float lanes[6][N];
+  for (int i = 0; i < N; ++i) {
+    lanes[0][i] = r[i].origin[r[0].kx];
+    lanes[1][i] = r[i].origin[r[0].ky];
+    lanes[2][i] = r[i].origin[r[0].kz];
+    lanes[3][i] = r[i].sx;
+    lanes[4][i] = r[i].sy;
+    lanes[5][i] = r[i].sz;
+  }
+  WatertightRays<N> w;
+  w.kx = r[0].kx;
+  w.ky = r[0].ky;
+  w.kz = r[0].kz;
+  w.ox = F::load(lanes[0]);
+  w.oy = F::load(lanes[1]);
+  w.oz = F::load(lanes[2]);
+  w.sx = F::load(lanes[3]);
+  w.sy = F::load(lanes[4]);
+  w.sz = F::load(lanes[5]);
+  return w;
+}
+
 /// Tests triangle `lane` of `block` against the N rays of `rays`, each restricted to its own
 /// [tmin, tmax] (note `<=` at both ends, as `intersect_triangle_block`: the caller applies the
 /// exact `t < tie_limit` rule). Returns the mask of rays hit, and their t, u, v in lanes of
@@ -36,33 +62,15 @@ inline unsigned intersect_triangle_rays(const TriangleBlock4& block, int lane, c
   const F bx = rel(1, rays.kx, rays.ox) - rays.sx * bkz, by = rel(1, rays.ky, rays.oy) - rays.sy * bkz;
   const F cx = rel(2, rays.kx, rays.ox) - rays.sx * ckz, cy = rel(2, rays.ky, rays.oy) - rays.sy * ckz;
   constexpr unsigned kAll = N >= 32 ? ~0u : (1u << N) - 1u;
-  const F zero = F::broadcast(0.f);
-  // The float filter of intersect_triangle, one lane per ray: when it rejects every ray (the
-  // common case), the triangle is done.
-  {
-    const F p0 = cx * by, q0 = cy * bx, p1 = ax * cy, q1 = ay * cx, p2 = bx * ay, q2 = by * ax;
-    const unsigned negative = less_mask(p0, q0) | less_mask(p1, q1) | less_mask(p2, q2);
-    const unsigned positive = less_mask(q0, p0) | less_mask(q1, p1) | less_mask(q2, p2);
-    if ((negative & positive & kAll) == kAll) return 0;
-  }
+  // The float filter, one lane per ray: when it rejects every ray (the common case), the
+  // triangle is done.
+  if ((lanes_beside(ax, ay, bx, by, cx, cy) & kAll) == kAll) return 0;
   // Edge functions with exact products, rounded once to float, as in intersect_triangle.
   const F e0 = difference_of_products(cx, by, cy, bx);
   const F e1 = difference_of_products(ax, cy, ay, cx);
   const F e2 = difference_of_products(bx, ay, by, ax);
-  const unsigned any_negative = less_mask(e0, zero) | less_mask(e1, zero) | less_mask(e2, zero);
-  const unsigned any_positive = less_mask(zero, e0) | less_mask(zero, e1) | less_mask(zero, e2);
-  const F det = e0 + e1 + e2;
-  unsigned mask = ~(any_negative & any_positive) & ~equal_mask(det, zero) & kAll;
-  if (mask == 0) return 0;
-  const F rcp = F::broadcast(1.f) / det;
-  const F th = (e0 * (rays.sz * akz) + e1 * (rays.sz * bkz) + e2 * (rays.sz * ckz)) * rcp;
-  // tmin <= th <= tmax, false for NaN.
-  mask &= less_equal_mask(tmin, th) & less_equal_mask(th, tmax);
-  if (mask == 0) return 0;
-  th.store(t_out);
-  (e1 * rcp).store(u_out);
-  (e2 * rcp).store(v_out);
-  return mask;
+  return finish_watertight(kAll, e0, e1, e2, rays.sz * akz, rays.sz * bkz, rays.sz * ckz, tmin, tmax, t_out, u_out,
+                           v_out);
 }
 
 }  // namespace raylab
