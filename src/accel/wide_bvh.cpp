@@ -50,13 +50,8 @@ bool WideBvh<W>::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   float tmax = ray.tmax;
   Hit best = hit;
   std::uint64_t nodes_visited = 0, prim_tests = 0;
-  const WideStackEntry root{0, 0, ray.tmin};
-  // Finite rays (all but a few) skip the occupied-slot mask at every node.
-  const bool found = is_finite(ray.origin) && is_finite(ray.direction)
-                         ? walk_wide_bvh<kAnyHit, kCount, true, W>(m_tree, m_geometry, root, box_ray, tri_ray, ray,
-                                                                   tmax, best, nodes_visited, prim_tests)
-                         : walk_wide_bvh<kAnyHit, kCount, false, W>(m_tree, m_geometry, root, box_ray, tri_ray, ray,
-                                                                    tmax, best, nodes_visited, prim_tests);
+  const bool found = walk_wide_bvh<kAnyHit, kCount, W>(m_tree, m_geometry, WideStackEntry{0, 0, ray.tmin}, box_ray,
+                                                       tri_ray, ray, tmax, best, nodes_visited, prim_tests);
   return finish_traversal<kCount>(found, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
 }
 

@@ -149,8 +149,8 @@ class WideCollapser {
   }
 
   // Copies every block's triangles in by their ids, in parallel: the ids come in build order,
-  // so this is a gather from all over the triangle array, the costliest part of the collapse
-  // when done on the way (about two thirds of it on spd:mount at 2M triangles).
+  // so this is a gather from all over the triangle array (on spd:mount at 2M triangles 30 ms on
+  // one thread and 16 on two, next to the 115 ms of the sequential walk before it).
   void fill_blocks() {
     std::vector<TriangleBlock4>& blocks = m_out.leaves.blocks;
     const std::vector<Triangle>& triangles = m_geometry.triangles;

@@ -109,8 +109,6 @@ struct WideBoxRay {
   std::uint32_t near_x = 0, near_y = 0, near_z = 0;  ///< byte offsets of the near planes
   std::uint32_t far_x = 0, far_y = 0, far_z = 0;     ///< byte offsets of the far planes
 
-  /// Unset constants, to be assigned before use (packets keep an array of them).
-  WideBoxRay() = default;
   /// The constants of `ray`.
   explicit WideBoxRay(const Ray& ray)
       : ox(F::broadcast(ray.origin.x)),
@@ -127,10 +125,7 @@ struct WideBoxRay {
   }
 
   /// Bit mask of the children of `node` that the ray enters within [tmin, tmax] (the exit
-  /// widened by kSlabWiden), and their entry distances in `t_enter`. kFinite: the ray's origin
-  /// and direction are finite, so an empty slot (+inf to -inf) fails the slab test by itself
-  /// (its entry is +inf and its exit -inf, never NaN) and the occupied-slot mask is not needed.
-  template <bool kFinite>
+  /// widened by kSlabWiden), and their entry distances in `t_enter`.
   unsigned test(const WideBvhNode<W>& node, float tmin, float tmax, float* t_enter) const {
     const F tx0 = (plane(node, near_x) - ox) * ix;
     const F tx1 = (plane(node, far_x) - ox) * ix;
@@ -144,9 +139,7 @@ struct WideBoxRay {
     const F t_far =
         min(min(tz1, min(ty1, min(tx1, F::broadcast(INFINITY)))), F::broadcast(tmax)) * F::broadcast(kSlabWiden);
     t_near.store(t_enter);
-    const auto entered = static_cast<unsigned>(less_equal_mask(t_near, t_far));
-    if constexpr (kFinite) return entered;
-    return entered & occupied_slots(node);
+    return static_cast<unsigned>(less_equal_mask(t_near, t_far)) & occupied_slots(node);
   }
 
   /// Bit mask of the slots of `node` that hold a child. The slab test alone does not exclude an

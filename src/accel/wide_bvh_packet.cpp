@@ -212,15 +212,12 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
     return static_cast<std::uint32_t>(less_equal_mask(t_near, t_far)) << o;
   };
 
-  // A ray's candidate from the leaf lane holding primitive `id`: kept under the exact
-  // closest-hit rule (lower id on ties), as the single-ray leaf test keeps it.
-  auto offer = [&](int i, std::uint32_t id, float t, float u, float v) {
-    if (!(t < best[i].tie_limit(id, tmax[i]))) return false;
-    tmax[i] = t;
-    best[i] = {t, id, u, v};
+  std::uint64_t nodes_visited = 0, prim_tests = 0;  // not reported: packets are never counted
+
+  // Ray i found a hit: an any-hit ray is done.
+  auto record_hit = [&](int i) {
     found |= 1u << i;
     if constexpr (kAnyHit) alive &= ~(1u << i);
-    return true;
   };
 
   // The leaf (first, count_flags) for the rays in `active`: ray-parallel for the groups with
@@ -234,23 +231,26 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
       }
     }
     const std::uint32_t triangle_count = m_tree.leaves.triangle_count;
-    std::uint64_t uncounted = 0;
-    if (parallel != 0) {
-      for (std::uint32_t b = first; b < first + leaf_block_count<W>(count_flags); ++b) {
-        const TriangleBlock4& block = m_tree.leaves.blocks[b];
-        for (int lane = 0; lane < 4; ++lane) {
-          const std::uint32_t id = block.id[lane];
-          if (id >= triangle_count) continue;  // empty, or another kind (tested below)
-          for (int g = 0; g < kGroups; ++g) {
-            const int o = g * kRayLanes;
-            if (((parallel >> o) & kGroupMask) == 0) continue;
-            alignas(64) float t[kRayLanes], u[kRayLanes], v[kRayLanes];
-            std::uint32_t hit = intersect_triangle_rays<kRayLanes>(block, lane, group_rays[g], L::load(tmin + o),
-                                                                   L::load(tmax + o), t, u, v);
-            for (hit &= parallel >> o; hit != 0; hit &= hit - 1) {
-              const int j = std::countr_zero(hit);
-              if (offer(o + j, id, t[j], u[j], v[j]) && kAnyHit) parallel &= ~(1u << (o + j));
-            }
+    for (std::uint32_t b = first; parallel != 0 && b < first + leaf_block_count<W>(count_flags); ++b) {
+      const TriangleBlock4& block = m_tree.leaves.blocks[b];
+      for (int lane = 0; lane < 4; ++lane) {
+        const std::uint32_t id = block.id[lane];
+        if (id >= triangle_count) continue;  // unused
+        for (int g = 0; g < kGroups; ++g) {
+          const int o = g * kRayLanes;
+          if (((parallel & alive) >> o & kGroupMask) == 0) continue;
+          alignas(64) float t[kRayLanes], u[kRayLanes], v[kRayLanes];
+          std::uint32_t hit = intersect_triangle_rays<kRayLanes>(block, lane, group_rays[g], L::load(tmin + o),
+                                                                 L::load(tmax + o), t, u, v);
+          // Each candidate kept under the exact closest-hit rule (lower id on ties), as the
+          // single-ray leaf test keeps it; an any-hit ray stops at its first.
+          for (hit &= (parallel & alive) >> o; hit != 0; hit &= hit - 1) {
+            const int i = o + std::countr_zero(hit);
+            const int j = i - o;
+            if (!(t[j] < best[i].tie_limit(id, tmax[i]))) continue;
+            tmax[i] = t[j];
+            best[i] = {t[j], id, u[j], v[j]};
+            record_hit(i);
           }
         }
       }
@@ -258,23 +258,20 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
     for (std::uint32_t m = active & ~parallel; m != 0; m &= m - 1) {
       const int i = std::countr_zero(m);
       if (intersect_wide_leaf_triangles<kAnyHit, false, W>(m_tree.leaves, first, count_flags, tri_rays[i], tmin[i],
-                                                           tmax[i], best[i], uncounted)) {
-        found |= 1u << i;
-        if constexpr (kAnyHit) alive &= ~(1u << i);
+                                                           tmax[i], best[i], prim_tests)) {
+        record_hit(i);
       }
     }
     if (!leaf_has_others<W>(count_flags)) return;
     for (std::uint32_t m = active & alive; m != 0; m &= m - 1) {
       const int i = std::countr_zero(m);
       if (intersect_wide_leaf_others<kAnyHit, false, W>(m_tree.leaves, m_geometry, first, count_flags, tri_rays[i],
-                                                        rays[i], tmin[i], tmax[i], best[i], uncounted)) {
-        found |= 1u << i;
-        if constexpr (kAnyHit) alive &= ~(1u << i);
+                                                        rays[i], tmin[i], tmax[i], best[i], prim_tests)) {
+        record_hit(i);
       }
     }
   };
 
-  std::uint64_t nodes_visited = 0, prim_tests = 0;  // not reported: packets are never counted
   PacketStackEntry stack[kWideStackSize<W>];
   int size = 0;
   PacketStackEntry current{{0, 0, tmin_lo}, alive};
@@ -294,10 +291,9 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
       for (std::uint32_t m = active; m != 0; m &= m - 1) {
         const int i = std::countr_zero(m);
         Ray& r = rays[i];
-        if (walk_wide_bvh<kAnyHit, false, false, W>(m_tree, m_geometry, current.node, WideBoxRay<W>(r), tri_rays[i], r,
-                                                    tmax[i], best[i], nodes_visited, prim_tests)) {
-          found |= 1u << i;
-          if constexpr (kAnyHit) alive &= ~(1u << i);
+        if (walk_wide_bvh<kAnyHit, false, W>(m_tree, m_geometry, current.node, WideBoxRay<W>(r), tri_rays[i], r,
+                                             tmax[i], best[i], nodes_visited, prim_tests)) {
+          record_hit(i);
         }
       }
     } else if (active != 0 && current.node.count != 0) {

@@ -17,9 +17,7 @@ inline constexpr int kWideStackSize = 96 * (W - 1) + 1;
 /// Walks the subtree (or leaf) `start` for one ray, nearest child first, from
 /// distance `ray.tmin` up to `tmax`; on hits shrinks `tmax` and updates `best`. With kAnyHit
 /// stops at the first hit and visits children in slot order. Returns whether anything was hit.
-/// kFinite: the ray's origin and direction are finite (see WideBoxRay::test); false is always
-/// correct.
-template <bool kAnyHit, bool kCount, bool kFinite, int W>
+template <bool kAnyHit, bool kCount, int W>
 bool walk_wide_bvh(const WideBvhTree<W>& tree, const Geometry& geometry, WideStackEntry start,
                    const WideBoxRay<W>& box_ray, const WatertightRay& tri_ray, const Ray& ray, float& tmax, Hit& best,
                    std::uint64_t& nodes_visited, std::uint64_t& prim_tests) {
@@ -40,7 +38,7 @@ bool walk_wide_bvh(const WideBvhTree<W>& tree, const Geometry& geometry, WideSta
       const WideBvhNode<W>& node = nodes[current.child];
       if constexpr (kCount) ++nodes_visited;
       alignas(64) float t_enter[W];
-      unsigned mask = box_ray.template test<kFinite>(node, tmin, tmax, t_enter);
+      unsigned mask = box_ray.test(node, tmin, tmax, t_enter);
       if (mask != 0) {
         // One child entered (the common case): go on with it, nothing to order.
         int i = std::countr_zero(mask);
