@@ -10,6 +10,7 @@
 // components neither crash nor hit.
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -184,6 +185,31 @@ std::vector<std::uint32_t> wide_leaf_order(const Geometry& g, const BvhTree& tre
 using Key = std::pair<std::uint32_t, std::uint32_t>;
 Key combine(Key a, Key b) { return {std::min(a.first, b.first), a.second + b.second}; }
 
+// The layout is depth first: a node, then the subtrees of its interior slots in slot order;
+// leaves' blocks follow one another in the same order (leaf by leaf, slot by slot), whatever
+// the number of tasks that collapsed the tree.
+template <int W>
+void check_depth_first_layout(const WideBvhTree<W>& wide) {
+  std::uint32_t next_node = 0, next_block = 0;
+  auto visit = [&](auto&& self, std::uint32_t w) -> void {
+    EXPECT_EQ(w, next_node) << "node " << w << " is not where a depth-first layout puts it";
+    ++next_node;
+    const WideBvhNode<W>& n = wide.nodes[w];
+    for (int i = 0; i < W && !::testing::Test::HasFailure(); ++i) {
+      const Slot kind = slot_kind(n, i);
+      if (kind == Slot::kInterior) self(self, n.child[i]);
+      if (kind != Slot::kLeaf) continue;
+      const std::uint32_t blocks = WideBvhLeaves::block_count(n.count[i]);
+      if (blocks == 0) continue;
+      EXPECT_EQ(n.child[i], next_block) << "node " << w << " slot " << i << ": blocks out of depth-first order";
+      next_block += blocks;
+    }
+  };
+  visit(visit, 0);
+  EXPECT_EQ(next_node, wide.nodes.size());
+  EXPECT_EQ(next_block, wide.leaves.blocks.size());
+}
+
 // Every structural promise of collapse_to_wide<W>(tree, g), with `wide` its result, and of the
 // traversal's depth and info.
 // With spatial splits a triangle may sit in several leaves, clipped: then only the promises that
@@ -277,6 +303,8 @@ void check_collapse(const Geometry& g, const BvhTree& tree, const WideBvhTree<W>
   if (::testing::Test::HasFailure()) return;
   EXPECT_EQ(reached[0], 0) << "the root is nobody's child";
   for (std::uint32_t w = 1; w < wn; ++w) EXPECT_EQ(reached[w], 1) << "node " << w << " reached that often";
+  if (::testing::Test::HasFailure()) return;
+  check_depth_first_layout<W>(wide);
   EXPECT_EQ(leaf_slots, tree.leaf_count);
   EXPECT_EQ(wide.leaf_count, tree.leaf_count);
   for (std::size_t b = 0; b < owners.block.size(); ++b) EXPECT_NE(owners.block[b], -1) << "block " << b << " unused";
@@ -705,6 +733,34 @@ TYPED_TEST(WideBvhTest, StructureUnderOtherBuildConfigs) {
     Sampler s(7);
     check_all<W>(every_shape_kind(s), config, 107, 600);
   }
+}
+
+// A scene large enough that the collapse cuts it into fragments collapsed by separate tasks
+// (subtrees of a few thousand blocks and ids), with leaves of every form: the same structure
+// and layout as on small scenes, and the same tree with one thread as with several.
+TYPED_TEST(WideBvhTest, LargeSceneCollapsedInParallel) {
+  constexpr int W = TypeParam::value;
+  Sampler s(31);
+  Geometry g;
+  for (int i = 0; i < 40000; ++i) g.add(random_triangle(s, s.in_box(Vec3(-40.f), Vec3(40.f)), s.uni(0.2f, 1.5f)), 0);
+  for (int i = 0; i < 6000; ++i) g.add(Sphere{s.in_box(Vec3(-40.f), Vec3(40.f)), s.uni(0.1f, 1.f)}, 1);
+  check_all<W>(g, BvhConfig{}, 131, 400);
+  const BvhTree tree = build_bvh(g, WideBvh<W>::build_config(BvhConfig{}));
+  const WideBvhTree<W> parallel = collapse_to_wide<W>(tree, g);
+  WideBvhTree<W> single;
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    single = collapse_to_wide<W>(tree, g);
+  }
+  ASSERT_EQ(single.nodes.size(), parallel.nodes.size());
+  ASSERT_EQ(single.leaves.blocks.size(), parallel.leaves.blocks.size());
+  EXPECT_EQ(std::memcmp(single.nodes.data(), parallel.nodes.data(), parallel.nodes.size() * sizeof(WideBvhNode<W>)), 0);
+  EXPECT_EQ(std::memcmp(single.leaves.blocks.data(), parallel.leaves.blocks.data(),
+                        parallel.leaves.blocks.size() * sizeof(TriangleBlock4)),
+            0);
+  EXPECT_EQ(single.leaves.others, parallel.leaves.others);
+  EXPECT_EQ(single.max_depth, parallel.max_depth);
+  EXPECT_GT(parallel.leaves.blocks.size(), 8000u) << "too small to be cut into fragments";
 }
 
 // Spatial splits (clipped triangle references in several leaves) and leaf costs per block: a

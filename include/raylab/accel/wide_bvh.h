@@ -11,6 +11,7 @@
 
 #include "raylab/accel/accelerator.h"
 #include "raylab/accel/bvh.h"
+#include "raylab/core/uninitialized_vector.h"
 #include "raylab/geometry/geometry.h"
 #include "raylab/geometry/triangle_block.h"
 #include "raylab/simd/wide_float.h"
@@ -44,9 +45,9 @@ struct WideBvhLeaves {
   /// The largest value of the field above the block bits (a start or a number of ids).
   static constexpr std::uint32_t kMaxOthersField = (kHasOthers >> kBlockBits) - 1;
 
-  std::vector<TriangleBlock4> blocks;  ///< triangles, leaf after leaf
-  std::vector<std::uint32_t> others;   ///< ids of the other kinds (and headers), see above
-  std::uint32_t triangle_count = 0;    ///< primitive ids below this are triangles
+  UninitializedVector<TriangleBlock4> blocks;  ///< triangles, leaf after leaf
+  std::vector<std::uint32_t> others;           ///< ids of the other kinds (and headers), see above
+  std::uint32_t triangle_count = 0;            ///< primitive ids below this are triangles
 
   /// Whether no leaf holds anything (no ray can hit).
   bool empty() const { return blocks.empty() && others.empty(); }
@@ -87,7 +88,7 @@ struct alignas(64) WideBvhNode {
 /// A wide tree as plain data.
 template <int W>
 struct WideBvhTree {
-  std::vector<WideBvhNode<W>> nodes;  ///< root at index 0
+  UninitializedVector<WideBvhNode<W>> nodes;  ///< root at index 0
   WideBvhLeaves leaves;
   std::size_t leaf_count = 0;
   int max_depth = 0;
