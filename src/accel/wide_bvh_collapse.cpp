@@ -87,8 +87,8 @@ constexpr std::uint64_t kKeptSumWork = 64;
 // Binary nodes down to this depth sum their subtrees' leaves in parallel tasks.
 constexpr int kParallelSumDepth = 10;
 
-// A wide node's slot whose child index must be moved by `offset`: interior slots (count 0)
-// with a non-zero child (index 0 is a tree's root, never a child; empty slots hold 0).
+// Moves the child indices of `node`'s interior slots by `offset`: the slots with count 0 and a
+// child other than 0 (index 0 is a tree's root, never a child; empty slots hold 0).
 template <int W>
 void move_children(WideBvhNode<W>& node, std::uint32_t offset) {
   for (int i = 0; i < W; ++i) {
