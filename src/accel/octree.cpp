@@ -47,10 +47,6 @@ inline float min3(float a, float b, float c) {
   const float m = a < b ? a : b;
   return m < c ? m : c;
 }
-inline float max3(float a, float b, float c) {
-  const float m = a > b ? a : b;
-  return m > c ? m : c;
-}
 
 // One interior node on the way down: its crossings and the child being visited. 48 bytes.
 // Crossings of its near planes are not kept: the traversal only needs where the ray is now.

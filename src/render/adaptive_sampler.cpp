@@ -30,13 +30,12 @@ constexpr int kMaxDepth = 8;
 // Area of a cell of each level, as a fraction of the pixel: 4^-level.
 constexpr std::array<float, kMaxDepth + 1> kCellArea = {
     1.f, 0.25f, 0.0625f, 0.015625f, 0.00390625f, 0.0009765625f, 0.000244140625f, 6.103515625e-05f, 1.52587890625e-05f};
-// Levels every refined pixel gets regardless of what it finds: 4 x 4 strata, the stratification
-// of 16-spp jittered sampling; deeper levels only where a quarter's samples still differ.
-constexpr int kRefinedLevels = 2;
-// The first two levels take their 16 positions from a multi-jittered pattern (Chiu, Shirley and
-// Wang 1994): one sample in each of the 4 x 4 cells like jittered sampling, and one in each of
-// the 16 columns and 16 rows of width 1/16 as well, which halves the error on edges near the
-// axes. Sample i lies in cell (i % 4, i / 4).
+// Every refined pixel gets the pattern's levels (as far as the depth allows) whatever it finds:
+// 4 x 4 strata, the stratification of 16-spp jittered sampling; deeper levels only where a
+// quarter's samples still differ. The pattern's two levels take their 16 positions from a
+// multi-jittered pattern (Chiu, Shirley and Wang 1994): one sample in each of the 4 x 4 cells
+// like jittered sampling, and one in each of the 16 columns and 16 rows of width 1/16 as well,
+// which halves the error on edges near the axes. Sample i lies in cell (i % 4, i / 4).
 constexpr int kPatternSize = 16;
 constexpr int kPatternLevels = 2;
 // Refined pixels go to the workers in batches of this many.
