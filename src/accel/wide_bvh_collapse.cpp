@@ -65,19 +65,6 @@ struct LeafCursor {
   }
 };
 
-// What one binary leaf takes, from its split (the LeafSplit below).
-SubtreeLeaves leaf_usage(std::uint32_t blocks, std::uint32_t other_ids, bool mixed) {
-  SubtreeLeaves s;
-  s.leaves = 1;
-  s.blocks = blocks;
-  if (mixed) {
-    s.mixed = 1 + other_ids;  // a header, then the ids
-  } else {
-    s.others = other_ids;
-  }
-  return s;
-}
-
 // Subtrees with less leaf content than this (blocks plus ids) are collapsed by one task each;
 // above it, nodes are collapsed on the calling thread (a few hundred on a 2M-triangle mesh).
 constexpr std::uint64_t kFragmentWork = 4096;
@@ -87,13 +74,11 @@ constexpr std::uint64_t kKeptSumWork = 64;
 // Binary nodes down to this depth sum their subtrees' leaves in parallel tasks.
 constexpr int kParallelSumDepth = 10;
 
-// Moves the child indices of `node`'s interior slots by `offset`: the slots with count 0 and a
-// child other than 0 (index 0 is a tree's root, never a child; empty slots hold 0).
+// Whether slot `i` of `node` holds an interior child: count 0 and a child other than 0 (index 0
+// is a tree's root, never a child; empty slots hold 0).
 template <int W>
-void move_children(WideBvhNode<W>& node, std::uint32_t offset) {
-  for (int i = 0; i < W; ++i) {
-    if (node.count[i] == 0 && node.child[i] != 0) node.child[i] += offset;
-  }
+bool is_interior_slot(const WideBvhNode<W>& node, int i) {
+  return node.count[i] == 0 && node.child[i] != 0;
 }
 
 template <int W, class PrimOf>
@@ -131,9 +116,7 @@ class WideCollapser {
       set_slot(m_out.nodes[0], 0, 0, at);  // a single leaf: slot 0 of the only node
       return std::move(m_out);
     }
-    m_sums[0] = all;
-    m_summed[0] = 1;
-    visit(0, 0, start);
+    visit(0, 0, start, all);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m_fragments.size(), 1),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t f = r.begin(); f < r.end(); ++f) collapse_fragment(m_fragments[f]);
@@ -152,6 +135,18 @@ class WideCollapser {
 
     std::uint32_t blocks() const { return (block_triangles + 3) / 4; }
     bool mixed() const { return block_triangles != 0 && other_ids != 0; }
+    // What the leaf takes in the leaf arrays.
+    SubtreeLeaves usage() const {
+      SubtreeLeaves s;
+      s.leaves = 1;
+      s.blocks = blocks();
+      if (mixed()) {
+        s.mixed = 1 + other_ids;  // a header, then the ids
+      } else {
+        s.others = other_ids;
+      }
+      return s;
+    }
   };
 
   // A subtree collapsed by one task: its wide nodes, indexed from its root at 0.
@@ -197,7 +192,7 @@ class WideCollapser {
       if (!split.mixed() && split.other_ids > WideBvhLeaves::kMaxOthersField) {
         throw std::length_error("wide BVH: a leaf with too many primitives");
       }
-      return leaf_usage(split.blocks(), split.other_ids, split.mixed());
+      return split.usage();
     }
     SubtreeLeaves left, right;
     if (depth < kParallelSumDepth) {
@@ -306,17 +301,16 @@ class WideCollapser {
       }
     }
     for (std::uint32_t k = 0; k < split.blocks(); ++k) block[k].repeat_first_lane();
-    at.advance(leaf_usage(split.blocks(), split.other_ids, split.mixed()));
+    at.advance(split.usage());
     return slot;
   }
 
   // Collapses the top of the tree from binary interior node `b` (its children at wide depth
-  // `depth`, its leaves from `at`): a subtree small enough becomes a fragment, a larger one a
-  // node of m_top whose interior slots hold, until `assemble`, the piece of their child.
-  // Returns the piece of `b`.
-  std::uint32_t visit(std::uint32_t b, int depth, const LeafCursor& at) {
+  // `depth`, its leaves from `at`, `sums` its subtree's leaves): a subtree small enough becomes
+  // a fragment, a larger one a node of m_top whose interior slots hold, until `assemble`, the
+  // piece of their child. Returns the piece of `b`.
+  std::uint32_t visit(std::uint32_t b, int depth, const LeafCursor& at, const SubtreeLeaves& sums) {
     const auto piece = static_cast<std::uint32_t>(m_pieces.size());
-    const SubtreeLeaves sums = sums_of(b);
     if (work(sums) < kFragmentWork) {
       m_pieces.push_back({true, static_cast<std::uint32_t>(m_fragments.size())});
       m_fragments.push_back({b, depth, at, sums.leaves, {}, 0});
@@ -334,8 +328,9 @@ class WideCollapser {
       if (m_tree.nodes[children[i]].is_leaf()) {
         m_top_max_depth = std::max(m_top_max_depth, depth);
       } else {
-        next.advance(sums_of(children[i]));
-        const std::uint32_t child = visit(children[i], depth + 1, slot_start);  // may reallocate m_top
+        const SubtreeLeaves child_sums = sums_of(children[i]);
+        next.advance(child_sums);
+        const std::uint32_t child = visit(children[i], depth + 1, slot_start, child_sums);  // may reallocate m_top
         m_top[index].child[i] = child;
       }
     }
@@ -386,12 +381,17 @@ class WideCollapser {
                           if (piece.fragment) {
                             const Fragment& f = m_fragments[piece.index];
                             std::copy(f.nodes.begin(), f.nodes.end(), out + first[p]);
-                            for (std::size_t i = 0; i < f.nodes.size(); ++i) move_children(out[first[p] + i], first[p]);
+                            for (std::size_t k = 0; k < f.nodes.size(); ++k) {
+                              WideBvhNode<W>& node = out[first[p] + k];
+                              for (int i = 0; i < W; ++i) {
+                                if (is_interior_slot(node, i)) node.child[i] += first[p];  // own index to global
+                              }
+                            }
                           } else {
                             WideBvhNode<W>& node = out[first[p]];
                             node = m_top[piece.index];
                             for (int i = 0; i < W; ++i) {
-                              if (node.count[i] == 0 && node.child[i] != 0) node.child[i] = first[node.child[i]];
+                              if (is_interior_slot(node, i)) node.child[i] = first[node.child[i]];  // piece to index
                             }
                           }
                         }
