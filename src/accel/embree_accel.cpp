@@ -29,9 +29,14 @@
 //   armadillo.off). Measured cost, one thread, primary rays of 400x300 (median of 11 interleaved
 //   runs on a loaded machine, so +-10%): bunny 10.05 -> 8.79 Mrays/s, spd:gears 2.97 -> 2.65,
 //   armadillo 10.65 -> 9.28, i.e. about 12% for a reference whose answers we trust.
-// - Our intervals are [tmin, tmax); Embree's are closed. The ray is passed with tfar one float
-//   below tmax, so that Embree's triangles honour the open end exactly; the user callbacks are
-//   given the real tmax back through the query context.
+// - Our intervals are [tmin, tmax), and a hit's distance is what our own shape test computes.
+//   Embree's triangle distances are not exact and differ by kernel: its robust AVX2 kernel (on an
+//   AMD EPYC) puts a triangle lying at z = 2 at t = 2 - 1 ulp for a ray from the origin along z,
+//   so at tnear = 2 it misses a hit our test places exactly at 2 (its AVX-512 kernel on a Xeon
+//   did not). So Embree searches a slightly wider interval (tnear a little below tmin, tfar a
+//   little above tmax), a filter on the triangles keeps a candidate only when our exact test hits
+//   that triangle within [tmin, tmax), and the hit returned carries our test's t, u and v. The
+//   user callbacks are given the real tmin and tmax through the query context.
 // - Ties: Embree resolves equal distances between its own primitives in traversal order, not by
 //   our lower-id rule; the user callbacks do apply the rule against the closest hit so far.
 // - Counting: Embree exposes no traversal counts, so intersect_counted / occluded_counted count
@@ -108,6 +113,7 @@ struct SceneIds {
 // Per query: Embree hands the context pointer to the callbacks; the first member is Embree's own.
 struct QueryContext {
   RTCIntersectContext embree;
+  float tmin;                 ///< the caller's tmin (Embree sees a float a little below it)
   float tmax;                 ///< the caller's tmax (Embree sees the float below it)
   std::uint32_t incoming_id;  ///< the caller's closest hit so far, kInvalidId if none
 };
@@ -160,6 +166,7 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
     current.t = query.tmax;
     current.prim_id = query.incoming_id;
   }
+  ray.tmin = query.tmin;
   if (!ids.geometry->intersect(ids.others[args->primID], WatertightRay(ray), ray, current)) return;
   RTCRayN_tfar(rn, args->N, 0) = current.t;
   RTCHitN_u(hn, args->N, 0) = current.u;
@@ -174,18 +181,48 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
   if (args->valid[0] == 0) return;
   const auto& ids = *static_cast<const SceneIds*>(args->geometryUserPtr);
   Ray ray = ray_of(args->ray, args->N);
+  ray.tmin = query_of(args->context).tmin;
   ray.tmax = query_of(args->context).tmax;
   if (ids.geometry->occluded(ids.others[args->primID], WatertightRay(ray), ray)) {
     RTCRayN_tfar(args->ray, args->N, 0) = -std::numeric_limits<float>::infinity();  // Embree's "occluded"
   }
 }
 
+// Our own test of triangle `id` against `ray` (origin and direction) within [tmin, tmax).
+bool exact_triangle_hit(const SceneIds& ids, std::uint32_t id, const Ray& ray, float tmin, float tmax, Hit& hit) {
+  float t, u, v;
+  if (!intersect_triangle(ids.geometry->triangles[id], WatertightRay(ray), tmin, tmax, t, u, v)) return false;
+  hit = {t, id, u, v};
+  return true;
+}
+
+// Keeps Embree's candidate triangle hits that our exact test confirms within the caller's
+// [tmin, tmax).
+void keep_exact_hits(const RTCFilterFunctionNArguments* args) {
+  const auto& ids = *static_cast<const SceneIds*>(args->geometryUserPtr);
+  const QueryContext& query = query_of(args->context);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    const Ray ray = ray_of(args->ray, args->N);
+    Hit hit;
+    if (!exact_triangle_hit(ids, ids.triangles[RTCHitN_primID(args->hit, args->N, i)], ray, query.tmin, query.tmax,
+                            hit)) {
+      args->valid[i] = 0;
+    }
+  }
+}
+
+// Embree's interval for the caller's [tmin, tmax): wider by a margin that covers its distances'
+// rounding (keep_exact_hits decides at the ends); tnear never negative (Embree asserts it).
+float embree_tnear(float tmin) { return std::max(0.f, tmin - std::fabs(tmin) * 0x1p-20f); }
+float embree_tfar(float tmax) { return tmax + std::fabs(tmax) * 0x1p-20f; }
+
 RTCRay embree_ray(const Ray& r) {
   RTCRay e{};
   e.org_x = r.origin.x, e.org_y = r.origin.y, e.org_z = r.origin.z;
   e.dir_x = r.direction.x, e.dir_y = r.direction.y, e.dir_z = r.direction.z;
-  e.tnear = r.tmin;
-  e.tfar = std::nextafter(r.tmax, -std::numeric_limits<float>::infinity());  // [tmin, tmax) as closed
+  e.tnear = std::isfinite(r.tmin) ? embree_tnear(r.tmin) : r.tmin;
+  e.tfar = embree_tfar(r.tmax);
   e.mask = ~0u;
   return e;
 }
@@ -280,6 +317,9 @@ void EmbreeAccel::build() {
         indices[3 * i + k] = static_cast<unsigned>(3 * i + k);
       }
     }
+    rtcSetGeometryUserData(geom, &m_ids);
+    rtcSetGeometryIntersectFilterFunction(geom, keep_exact_hits);
+    rtcSetGeometryOccludedFilterFunction(geom, keep_exact_hits);
     rtcCommitGeometry(geom);
     m_ids.triangle_geom = rtcAttachGeometry(m_scene, geom);
     rtcReleaseGeometry(geom);
@@ -312,6 +352,7 @@ EmbreeAccel::~EmbreeAccel() {
 bool EmbreeAccel::intersect(Ray& ray, Hit& hit) const {
   QueryContext query;
   rtcInitIntersectContext(&query.embree);
+  query.tmin = ray.tmin;
   query.tmax = ray.tmax;
   query.incoming_id = hit.prim_id;
   RTCRayHit rh;
@@ -320,10 +361,15 @@ bool EmbreeAccel::intersect(Ray& ray, Hit& hit) const {
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(m_scene, &query.embree, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-  hit.t = rh.ray.tfar;
-  hit.prim_id = m_ids.global_id(rh.hit.geomID, rh.hit.primID);
-  hit.u = rh.hit.u;
-  hit.v = rh.hit.v;
+  if (rh.hit.geomID == m_ids.triangle_geom) {
+    // The distance and barycentrics of our own test (which the filter has confirmed).
+    if (!exact_triangle_hit(m_ids, m_ids.triangles[rh.hit.primID], ray, ray.tmin, ray.tmax, hit)) return false;
+  } else {
+    hit.t = rh.ray.tfar;
+    hit.prim_id = m_ids.global_id(rh.hit.geomID, rh.hit.primID);
+    hit.u = rh.hit.u;
+    hit.v = rh.hit.v;
+  }
   ray.tmax = hit.t;
   return true;
 }
@@ -331,6 +377,7 @@ bool EmbreeAccel::intersect(Ray& ray, Hit& hit) const {
 bool EmbreeAccel::occluded(const Ray& ray) const {
   QueryContext query;
   rtcInitIntersectContext(&query.embree);
+  query.tmin = ray.tmin;
   query.tmax = ray.tmax;
   query.incoming_id = kInvalidId;
   RTCRay r = embree_ray(ray);
