@@ -76,37 +76,38 @@ void PrimaryPacketTracer::trace_shadows(std::size_t light, std::size_t lanes) {
   }
 }
 
-TilePacketTracer::TilePacketTracer(const TraceContext& ctx, const Camera& camera, const PixelSampler& sampler)
-    : m_camera(camera), m_sampler(sampler), m_tracer(ctx) {}
+TilePacketTracer::TilePacketTracer(const TraceContext& ctx, const Camera& camera, const PixelSampler& sampler,
+                                   int first_sample, int end_sample)
+    : m_camera(camera), m_sampler(sampler), m_first_sample(first_sample), m_end_sample(end_sample), m_tracer(ctx) {}
 
 std::vector<PixelRect> TilePacketTracer::units(const PixelRect& tile) const {
   std::vector<PixelRect> out;
-  if (m_sampler.spp() >= kPacketSize) {
+  if (sample_count() >= kPacketSize) {
     for (int py = tile.y0; py < tile.y1; ++py) {
       for (int px = tile.x0; px < tile.x1; ++px) out.push_back({px, py, px + 1, py + 1});
     }
     return out;
   }
-  const int side = packet_block_side(m_sampler.spp());
+  const int side = packet_block_side(sample_count());
   for (int y = tile.y0; y < tile.y1; y += side) out.push_back({tile.x0, y, tile.x1, std::min(y + side, tile.y1)});
   return out;
 }
 
 void TilePacketTracer::trace_unit(const PixelRect& unit) {
-  const int spp = m_sampler.spp();
-  const int side = packet_block_side(spp);
+  const int count = sample_count();
+  const int side = packet_block_side(count);
   const int width = unit.x1 - unit.x0;
-  m_colors.resize(std::size_t(width) * (unit.y1 - unit.y0) * spp);
+  m_colors.resize(std::size_t(width) * (unit.y1 - unit.y0) * count);
   // Blocks left to right; within a block, pixels row-major and each pixel's samples in order. A
   // packet takes the next kPacketSize samples of that sequence, so it may span two blocks.
   for (int bx = unit.x0; bx < unit.x1; bx += side) {
     for (int py = unit.y0; py < unit.y1; ++py) {
       for (int px = bx; px < std::min(bx + side, unit.x1); ++px) {
-        for (int i = 0; i < spp; ++i) {
+        for (int i = m_first_sample; i < m_end_sample; ++i) {
           const Sample2 u = m_sampler.sample(px, py, i);
           m_rays[m_count] = m_camera.generate(static_cast<float>(px) + u.x, static_cast<float>(py) + u.y);
           m_seeds[m_count] = sample_path_seed(m_sampler.seed(), px, py, i);
-          m_slots[m_count] = (std::size_t(py - unit.y0) * width + (px - unit.x0)) * spp + i;
+          m_slots[m_count] = (std::size_t(py - unit.y0) * width + (px - unit.x0)) * count + (i - m_first_sample);
           if (++m_count == kPacketSize) flush();
         }
       }

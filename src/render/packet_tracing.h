@@ -62,21 +62,23 @@ class PrimaryPacketTracer {
 /// single-ray loop accumulates in, which wider filters need for the same sums).
 class TilePacketTracer {
  public:
-  /// Samples placed by `sampler`, rays made by `camera`, traced in `ctx`.
-  TilePacketTracer(const TraceContext& ctx, const Camera& camera, const PixelSampler& sampler);
+  /// Samples [first_sample, end_sample) of every pixel (of the `sampler.spp()`), placed by
+  /// `sampler`, rays made by `camera`, traced in `ctx`.
+  TilePacketTracer(const TraceContext& ctx, const Camera& camera, const PixelSampler& sampler, int first_sample,
+                   int end_sample);
 
-  /// Calls `on_pixel(px, py, colors)` for every pixel of `tile` in row-major order, `colors[i]`
-  /// being the radiance of sample i of that pixel (i < spp).
+  /// Calls `on_pixel(px, py, colors)` for every pixel of `tile` in row-major order, `colors[k]`
+  /// being the radiance of sample first_sample + k of that pixel.
   template <class Fn>
   void for_each_pixel(const PixelRect& tile, Fn&& on_pixel) {
     for (const PixelRect& unit : units(tile)) {
       trace_unit(unit);
-      const int spp = m_sampler.spp();
+      const int count = sample_count();
       const int width = unit.x1 - unit.x0;
       for (int py = unit.y0; py < unit.y1; ++py) {
         for (int px = unit.x0; px < unit.x1; ++px) {
-          const std::size_t first = (std::size_t(py - unit.y0) * width + (px - unit.x0)) * spp;
-          on_pixel(px, py, std::span<const Color>(m_colors).subspan(first, static_cast<std::size_t>(spp)));
+          const std::size_t first = (std::size_t(py - unit.y0) * width + (px - unit.x0)) * count;
+          on_pixel(px, py, std::span<const Color>(m_colors).subspan(first, static_cast<std::size_t>(count)));
         }
       }
     }
@@ -91,9 +93,12 @@ class TilePacketTracer {
   void trace_unit(const PixelRect& unit);
   // Traces the pending lanes as one packet and stores their colours.
   void flush();
+  // Samples traced per pixel.
+  int sample_count() const { return m_end_sample - m_first_sample; }
 
   const Camera& m_camera;
   const PixelSampler& m_sampler;
+  int m_first_sample, m_end_sample;
   PrimaryPacketTracer m_tracer;
   std::vector<Color> m_colors;
   int m_count = 0;                                 // pending lanes

@@ -4,7 +4,9 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <mutex>
 #include <span>
+#include <string>
 
 #include "packet_tracing.h"
 #include "raylab/core/error.h"
@@ -24,122 +26,173 @@ using detail::TileGrid;
 // The box filter of half-width 0.5 is the plain per-pixel average: no sample leaves its pixel.
 bool is_pixel_box(const Filter& f) { return f.kind() == FilterKind::kBox && f.radius() == 0.5f; }
 
-// Weighted sums of one tile and the margin its samples reach into (filters wider than a pixel).
-struct TileAccumulator {
-  PixelRect area;  // pixels covered, margin included, clipped to the image
-  std::vector<Color> sum;
-  std::vector<float> weight;
-
-  explicit TileAccumulator(PixelRect a)
-      : area(a), sum(std::size_t(a.x1 - a.x0) * (a.y1 - a.y0)), weight(sum.size(), 0.f) {}
-
-  void add(const Filter& filter, float x, float y, Color c) {
-    const float r = filter.radius();
-    // Pixels whose centre lies strictly within the radius: |px + 0.5 - x| < r.
-    const int px0 = std::max(area.x0, static_cast<int>(std::floor(x - 0.5f - r)) + 1);
-    const int px1 = std::min(area.x1 - 1, static_cast<int>(std::ceil(x - 0.5f + r)) - 1);
-    const int py0 = std::max(area.y0, static_cast<int>(std::floor(y - 0.5f - r)) + 1);
-    const int py1 = std::min(area.y1 - 1, static_cast<int>(std::ceil(y - 0.5f + r)) - 1);
-    for (int py = py0; py <= py1; ++py) {
-      const float wy = filter.evaluate_1d(static_cast<float>(py) + 0.5f - y);
-      if (wy == 0.f) continue;
-      for (int px = px0; px <= px1; ++px) {
-        const float w = wy * filter.evaluate_1d(static_cast<float>(px) + 0.5f - x);
-        const std::size_t i = std::size_t(py - area.y0) * (area.x1 - area.x0) + (px - area.x0);
-        sum[i] += c * w;
-        weight[i] += w;
-      }
+// Adds sample colour `c`, taken at image position (x, y), to the pixels of `sums` whose centre
+// lies strictly within the filter's radius of it, weighted by the filter.
+void add_filtered(TileSums& sums, const Filter& filter, float x, float y, Color c) {
+  const float r = filter.radius();
+  // Pixels whose centre lies strictly within the radius: |px + 0.5 - x| < r.
+  const int px0 = std::max(sums.x0, static_cast<int>(std::floor(x - 0.5f - r)) + 1);
+  const int px1 = std::min(sums.x1 - 1, static_cast<int>(std::ceil(x - 0.5f + r)) - 1);
+  const int py0 = std::max(sums.y0, static_cast<int>(std::floor(y - 0.5f - r)) + 1);
+  const int py1 = std::min(sums.y1 - 1, static_cast<int>(std::ceil(y - 0.5f + r)) - 1);
+  for (int py = py0; py <= py1; ++py) {
+    const float wy = filter.evaluate_1d(static_cast<float>(py) + 0.5f - y);
+    if (wy == 0.f) continue;
+    for (int px = px0; px <= px1; ++px) {
+      const float w = wy * filter.evaluate_1d(static_cast<float>(px) + 0.5f - x);
+      const std::size_t i = sums.index(px, py);
+      sums.sum[i] += c * w;
+      sums.weight[i] += w;
     }
   }
-};
+}
+
+// Throws UsageError unless `p`, a state to go on from, was made for this image, tiling, sample
+// count and filter reach.
+void check_resumable(const RenderProgress& p, int width, int height, int tile_size, int spp, int margin) {
+  if (p.width == width && p.height == height && p.tile_size == tile_size && p.spp == spp && p.margin == margin &&
+      p.passes >= 1 && static_cast<int>(p.tiles.size()) == static_cast<int>(p.tile_done.size())) {
+    return;
+  }
+  throw UsageError("the saved render state is for a " + std::to_string(p.width) + "x" + std::to_string(p.height) +
+                   " image in tiles of " + std::to_string(p.tile_size) + " at " + std::to_string(p.spp) +
+                   " spp (filter margin " + std::to_string(p.margin) + "), not for this " + std::to_string(width) +
+                   "x" + std::to_string(height) + " render in tiles of " + std::to_string(tile_size) + " at " +
+                   std::to_string(spp) + " spp (filter margin " + std::to_string(margin) + ")");
+}
+
+// Samples [first, end) of every pixel of tile `rect` added to `sums` (which covers the tile and
+// its margin), in the order of a render in one go: pixels row-major, each pixel's samples in order.
+void render_tile_samples(const TraceContext& ctx, const Camera& camera, const PixelSampler& sampler,
+                         const Filter& filter, bool pixel_box, bool packets, const PixelRect& rect, int first, int end,
+                         TileSums& sums) {
+  // Sample i of pixel (px, py) has colour colour_of(i, x, y), at image position (x, y).
+  auto add_pixel = [&](int px, int py, auto&& colour_of) {
+    Color* own = pixel_box ? &sums.sum[sums.index(px, py)] : nullptr;
+    for (int i = first; i < end; ++i) {
+      // Every random choice of this sample comes from (pixel, index, seed): no shared state.
+      const Sample2 u = sampler.sample(px, py, i);
+      const float x = static_cast<float>(px) + u.x;
+      const float y = static_cast<float>(py) + u.y;
+      const Color c = colour_of(i, x, y);
+      if (own) {
+        *own += c;  // the box filter over the pixel: a plain sum, divided by the count at the end
+      } else {
+        add_filtered(sums, filter, x, y, c);
+      }
+    }
+  };
+  if (packets) {
+    // The same samples, seeds and sums in the same order; only the tracing is grouped.
+    detail::TilePacketTracer tracer(ctx, camera, sampler, first, end);
+    tracer.for_each_pixel(rect, [&](int px, int py, std::span<const Color> colours) {
+      add_pixel(px, py, [&](int i, float, float) { return colours[static_cast<std::size_t>(i - first)]; });
+    });
+    return;
+  }
+  for (int py = rect.y0; py < rect.y1; ++py) {
+    for (int px = rect.x0; px < rect.x1; ++px) {
+      add_pixel(px, py, [&](int i, float x, float y) {
+        return detail::trace_image_position(ctx, camera, x, y, sample_path_seed(sampler.seed(), px, py, i));
+      });
+    }
+  }
+}
 
 RenderResult render_uniform(const Scene& scene, const Accelerator& accel, Film& film, const RenderOptions& options,
                             const PixelSampler& sampler, const Filter& filter) {
   const Camera camera(scene.camera, film.width(), film.height());
   const TileGrid grid(film.width(), film.height(), options.tile_size);
-  const int spp = sampler.spp();
-  const float inv_spp = 1.f / static_cast<float>(spp);
   const bool pixel_box = is_pixel_box(filter);
-  // Wider filters: each tile accumulates into its own buffer (tile plus margin); the buffers are
-  // merged afterwards in tile order, so the sums (and the image) do not depend on scheduling.
+  // Wider filters: each tile accumulates into its own sums (tile plus margin), added up in tile
+  // order by develop(), so the image does not depend on scheduling.
   const int margin = pixel_box ? 0 : static_cast<int>(std::ceil(filter.radius() - 0.5f));
-  std::vector<std::unique_ptr<TileAccumulator>> tiles(pixel_box ? 0 : grid.count());
-
-  RenderWorkers workers(scene, accel, options);
-  std::atomic<int> tiles_done{0};
-  const auto start = std::chrono::steady_clock::now();
-  workers.for_each(grid.count(), [&](int t, const TraceContext& ctx) {
-    const PixelRect r = grid.rect(t);
-    TileAccumulator* acc = nullptr;
-    if (!pixel_box) {
-      tiles[t] = std::make_unique<TileAccumulator>(PixelRect{std::max(0, r.x0 - margin), std::max(0, r.y0 - margin),
-                                                             std::min(film.width(), r.x1 + margin),
-                                                             std::min(film.height(), r.y1 + margin)});
-      acc = tiles[t].get();
-    }
-    // Sample i of pixel (px, py) has colour colour_of(i, x, y), at image position (x, y).
-    auto add_pixel = [&](int px, int py, auto&& colour_of) {
-      Color sum{0.f};
-      for (int i = 0; i < spp; ++i) {
-        // Every random choice of this sample comes from (pixel, index, seed): no shared state.
-        const Sample2 u = sampler.sample(px, py, i);
-        const float x = static_cast<float>(px) + u.x;
-        const float y = static_cast<float>(py) + u.y;
-        const Color c = colour_of(i, x, y);
-        if (acc) {
-          acc->add(filter, x, y, c);
-        } else {
-          sum += c;
-        }
-      }
-      if (!acc) film.at(px, py) = sum * inv_spp;  // box filter over the pixel: the plain average
-    };
-    if (options.packets) {
-      // The same samples, seeds and sums in the same order; only the tracing is grouped.
-      detail::TilePacketTracer tracer(ctx, camera, sampler);
-      tracer.for_each_pixel(r, [&](int px, int py, std::span<const Color> colours) {
-        add_pixel(px, py, [&](int i, float, float) { return colours[static_cast<std::size_t>(i)]; });
-      });
-    } else {
-      for (int py = r.y0; py < r.y1; ++py) {
-        for (int px = r.x0; px < r.x1; ++px) {
-          add_pixel(px, py, [&](int i, float x, float y) {
-            return detail::trace_image_position(ctx, camera, x, y, sample_path_seed(sampler.seed(), px, py, i));
-          });
-        }
-      }
-    }
-    const int done = tiles_done.fetch_add(1, std::memory_order_relaxed) + 1;
-    if (options.on_progress) options.on_progress(done, grid.count());
-  });
-
-  if (!pixel_box) {
-    std::vector<Color> sum(std::size_t(film.width()) * film.height());
-    std::vector<float> weight(sum.size(), 0.f);
-    for (const auto& tile : tiles) {
-      const PixelRect& a = tile->area;
-      for (int y = a.y0; y < a.y1; ++y) {
-        for (int x = a.x0; x < a.x1; ++x) {
-          const std::size_t src = std::size_t(y - a.y0) * (a.x1 - a.x0) + (x - a.x0);
-          const std::size_t dst = std::size_t(y) * film.width() + x;
-          sum[dst] += tile->sum[src];
-          weight[dst] += tile->weight[src];
-        }
-      }
-    }
-    for (int y = 0; y < film.height(); ++y) {
-      for (int x = 0; x < film.width(); ++x) {
-        const std::size_t i = std::size_t(y) * film.width() + x;
-        // Every pixel centre has samples within any radius >= 0.5, so the weight is positive
-        // except where a negative lobe (Mitchell) cancels it: leave such a pixel black.
-        film.at(x, y) = std::abs(weight[i]) > 1e-12f ? sum[i] / weight[i] : Color{0.f};
-      }
-    }
+  RenderProgress own;
+  RenderProgress& progress = options.progress != nullptr ? *options.progress : own;
+  if (progress.tiles.empty()) {
+    progress = start_progress(film.width(), film.height(), grid.tile(), sampler.spp(), options.passes, margin);
+  } else {
+    check_resumable(progress, film.width(), film.height(), grid.tile(), sampler.spp(), margin);
   }
 
-  return detail::finish_render(
-      workers, start,
-      std::vector<std::uint32_t>(std::size_t(film.width()) * film.height(), static_cast<std::uint32_t>(spp)));
+  RenderWorkers workers(scene, accel, options);
+  std::mutex state_mutex;       // guards `progress` while tiles commit and checkpoints copy it
+  std::mutex checkpoint_mutex;  // one checkpoint at a time; guards last_checkpoint
+  auto last_checkpoint = std::chrono::steady_clock::now();
+  auto maybe_checkpoint = [&] {
+    if (!options.on_checkpoint || options.checkpoint_seconds <= 0.0) return;
+    const std::unique_lock one_at_a_time(checkpoint_mutex, std::try_to_lock);
+    if (!one_at_a_time.owns_lock()) return;
+    const std::chrono::duration<double> since = std::chrono::steady_clock::now() - last_checkpoint;
+    if (since.count() < options.checkpoint_seconds) return;
+    RenderProgress copy;
+    {
+      const std::lock_guard lock(state_mutex);
+      copy = progress;
+    }
+    options.on_checkpoint(copy);
+    last_checkpoint = std::chrono::steady_clock::now();  // the interval counts from the last write
+  };
+
+  const int tiles_total = progress.passes * grid.count();
+  std::atomic<int> tiles_done{progress.passes_done * grid.count() +
+                              (grid.count() - static_cast<int>(progress.unfinished_tiles().size()))};
+  std::atomic<bool> stopped{false};
+  const auto start = std::chrono::steady_clock::now();
+  for (int pass = progress.passes_done; pass < progress.passes; ++pass) {
+    const int first = progress.samples_before(pass), end = progress.samples_before(pass + 1);
+    const std::vector<int> todo = progress.unfinished_tiles();
+    workers.for_each(static_cast<int>(todo.size()), [&](int k, const TraceContext& ctx) {
+      if (stopped.load(std::memory_order_relaxed) || (options.should_stop && options.should_stop())) {
+        stopped.store(true, std::memory_order_relaxed);
+        return;
+      }
+      const int t = todo[static_cast<std::size_t>(k)];
+      // Only this task changes tile t during this pass, so it works on a copy and commits it whole:
+      // a checkpoint taken meanwhile sees the tile as it was after the previous pass.
+      TileSums sums = progress.tiles[static_cast<std::size_t>(t)];
+      render_tile_samples(ctx, camera, sampler, filter, pixel_box, options.packets, grid.rect(t), first, end, sums);
+      {
+        const std::lock_guard lock(state_mutex);
+        progress.tiles[static_cast<std::size_t>(t)] = std::move(sums);
+        progress.tile_done[static_cast<std::size_t>(t)] = 1;
+      }
+      const int done = tiles_done.fetch_add(1, std::memory_order_relaxed) + 1;
+      if (options.on_progress) options.on_progress(done, tiles_total);
+      maybe_checkpoint();
+    });
+    if (stopped.load()) break;
+    {
+      const std::lock_guard lock(state_mutex);
+      progress.passes_done = pass + 1;
+      if (!progress.complete()) std::fill(progress.tile_done.begin(), progress.tile_done.end(), 0);
+    }
+    if (options.on_pass && !progress.complete()) {
+      develop(progress, film);
+      options.on_pass(progress.passes_done, film);
+    }
+  }
+  develop(progress, film);
+
+  std::vector<std::uint32_t> samples(std::size_t(film.width()) * film.height());
+  for (int t = 0; t < grid.count(); ++t) {
+    const PixelRect r = grid.rect(t);
+    const auto n = static_cast<std::uint32_t>(progress.samples_in_tile(t));
+    for (int y = r.y0; y < r.y1; ++y) {
+      std::fill_n(samples.begin() + static_cast<std::ptrdiff_t>(std::size_t(y) * film.width() + r.x0), r.x1 - r.x0, n);
+    }
+  }
+  RenderResult result = detail::finish_render(workers, start, std::move(samples));
+  result.interrupted = !progress.complete();
+  return result;
+}
+
+// Throws UsageError when `options` ask an adaptive sampler for what only the uniform ones do.
+void check_adaptive_options(const std::string& sampler, const RenderOptions& options) {
+  if (options.passes != 1 || options.progress != nullptr || options.on_checkpoint) {
+    throw UsageError("passes, checkpoints and resuming work with the uniform samplers, not with " + sampler +
+                     " (its refinement needs the whole image at once)");
+  }
 }
 
 }  // namespace
@@ -177,6 +230,7 @@ RenderResult render(const Scene& scene, const Accelerator& accel, Film& film, co
   const Filter filter = make_filter(s.filter, s.filter_radius);
   RenderResult result;
   if (is_adaptive_sampler(name)) {
+    check_adaptive_options(name, options);
     const AdaptiveParams params = adaptive_params(name, s);
     result = name == "adaptive" ? render_adaptive(scene, accel, film, options, params)
                                 : render_adaptive_corners(scene, accel, film, options, params);

@@ -11,6 +11,7 @@
 #include "raylab/accel/accelerator.h"
 #include "raylab/core/stats.h"
 #include "raylab/render/film.h"
+#include "raylab/render/render_progress.h"
 #include "raylab/scene/scene.h"
 
 namespace raylab {
@@ -26,8 +27,32 @@ struct RenderOptions {
   /// the adaptive samplers always trace single rays.
   bool packets = true;
   /// Called with (tiles done, tiles total) each time a tile finishes, from whichever worker
-  /// finished it (so it must be thread-safe); may be empty.
+  /// finished it (so it must be thread-safe); may be empty. With several passes the totals count
+  /// every pass's tiles.
   std::function<void(int, int)> on_progress;
+
+  // Long renders (the uniform samplers only; the adaptive samplers refuse these with UsageError).
+
+  /// The samples per pixel are taken in this many passes over the whole image (1 to spp), so
+  /// that the image of the first passes can be looked at while the rest renders.
+  int passes = 1;
+  /// Where the render keeps its state (RenderProgress). Empty (no tiles): the render starts it
+  /// with `passes`. Holding work (from a checkpoint): the render goes on from there, with that
+  /// state's passes, and gives the same image as a render never stopped; a state made for another
+  /// image size, tile size, spp or filter throws UsageError. When null the render keeps its own.
+  RenderProgress* progress = nullptr;
+  /// Asked before each tile is started; once it answers true no further tile starts, the tiles
+  /// under way finish, and render() returns with RenderResult::interrupted set (the film then
+  /// shows the samples so far). May be empty.
+  std::function<bool()> should_stop;
+  /// Called each time a pass finishes but the last, with the number of passes done and the image
+  /// so far, from the calling thread between passes. May be empty.
+  std::function<void(int, const Film&)> on_pass;
+  /// Called at most every `checkpoint_seconds` (when positive) as tiles finish, with a consistent
+  /// copy of the state (finished tiles only), from a worker thread, one call at a time; other
+  /// workers go on meanwhile. May be empty.
+  std::function<void(const RenderProgress&)> on_checkpoint;
+  double checkpoint_seconds = 0.0;  ///< see on_checkpoint
 };
 
 /// What a finished render reports.
@@ -40,6 +65,8 @@ struct RenderResult {
   std::vector<std::uint32_t> samples_per_pixel;
   /// Notices for the user (an --spp rounded to what the sampler can use), one line each.
   std::vector<std::string> notices;
+  /// True when RenderOptions::should_stop ended the render before every pass was done.
+  bool interrupted = false;
 
   /// Primary rays traced (adaptive samplers trace a varying number).
   std::uint64_t primary_rays() const { return stats.rays[static_cast<int>(RayKind::kPrimary)]; }

@@ -1,0 +1,126 @@
+#include "raylab/render/render_progress.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "raylab/core/error.h"
+
+namespace raylab {
+namespace {
+
+int tiles_across(int pixels, int tile_size) { return (pixels + tile_size - 1) / tile_size; }
+
+// The rectangle tile `t` and its margin cover, clipped to the image (tiles as TileGrid numbers
+// them: row-major from the top-left).
+TileSums tile_area(int t, int width, int height, int tile_size, int margin) {
+  const int across = tiles_across(width, tile_size);
+  const int x0 = (t % across) * tile_size, y0 = (t / across) * tile_size;
+  TileSums s;
+  s.x0 = std::max(0, x0 - margin);
+  s.y0 = std::max(0, y0 - margin);
+  s.x1 = std::min(width, x0 + tile_size + margin);
+  s.y1 = std::min(height, y0 + tile_size + margin);
+  return s;
+}
+
+}  // namespace
+
+std::vector<int> RenderProgress::unfinished_tiles() const {
+  std::vector<int> out;
+  if (complete()) return out;
+  for (int t = 0; t < tile_count(); ++t) {
+    if (tile_done[t] == 0) out.push_back(t);
+  }
+  return out;
+}
+
+std::size_t RenderProgress::memory_bytes() const {
+  std::size_t bytes = tile_done.size();
+  for (const TileSums& s : tiles) bytes += s.sum.size() * sizeof(Color) + s.weight.size() * sizeof(float);
+  return bytes;
+}
+
+std::size_t progress_memory_bytes(int width, int height, int tile_size, int margin) {
+  if (width <= 0 || height <= 0 || tile_size <= 0) return 0;
+  const int across = tiles_across(width, tile_size), down = tiles_across(height, tile_size);
+  std::size_t bytes = 0;
+  for (int t = 0; t < across * down; ++t) {
+    const TileSums s = tile_area(t, width, height, tile_size, margin);
+    const std::size_t pixels = std::size_t(s.x1 - s.x0) * (s.y1 - s.y0);
+    bytes += pixels * (sizeof(Color) + (margin > 0 ? sizeof(float) : 0)) + sizeof(TileSums) + 1;
+  }
+  return bytes;
+}
+
+RenderProgress start_progress(int width, int height, int tile_size, int spp, int passes, int margin) {
+  if (width <= 0 || height <= 0) throw UsageError("the image size must be positive");
+  if (tile_size <= 0) throw UsageError("the tile size must be positive");
+  if (spp <= 0) throw UsageError("the samples per pixel must be positive");
+  if (passes < 1 || passes > spp) {
+    throw UsageError("--passes " + std::to_string(passes) + " must be between 1 and the samples per pixel (" +
+                     std::to_string(spp) + ")");
+  }
+  if (margin < 0) throw UsageError("the filter margin must not be negative");
+  RenderProgress p;
+  p.width = width;
+  p.height = height;
+  p.tile_size = tile_size;
+  p.spp = spp;
+  p.passes = passes;
+  p.margin = margin;
+  const int count = tiles_across(width, tile_size) * tiles_across(height, tile_size);
+  p.tile_done.assign(static_cast<std::size_t>(count), 0);
+  p.tiles.reserve(static_cast<std::size_t>(count));
+  for (int t = 0; t < count; ++t) {
+    TileSums s = tile_area(t, width, height, tile_size, margin);
+    const std::size_t pixels = std::size_t(s.x1 - s.x0) * (s.y1 - s.y0);
+    s.sum.assign(pixels, Color{0.f});
+    if (margin > 0) s.weight.assign(pixels, 0.f);
+    p.tiles.push_back(std::move(s));
+  }
+  return p;
+}
+
+void develop(const RenderProgress& progress, Film& film) {
+  if (progress.margin == 0) {
+    // The pixel box: every pixel's samples are its own tile's; the plain average, as the sum
+    // times the reciprocal of the count (the same float operations as a render in one go).
+    for (int t = 0; t < progress.tile_count(); ++t) {
+      const TileSums& s = progress.tiles[t];
+      const int n = progress.samples_in_tile(t);
+      const float inv = n > 0 ? 1.f / static_cast<float>(n) : 0.f;
+      for (int y = s.y0; y < s.y1; ++y) {
+        for (int x = s.x0; x < s.x1; ++x) film.at(x, y) = n > 0 ? s.sum[s.index(x, y)] * inv : Color{0.f};
+      }
+    }
+    return;
+  }
+  // Wider filters: the tiles' sums and weights added up in tile order, whatever order the tiles
+  // were rendered in, so the image does not depend on scheduling.
+  const std::size_t pixels = std::size_t(film.width()) * film.height();
+  std::vector<Color> sum(pixels, Color{0.f});
+  std::vector<float> weight(pixels, 0.f);
+  for (int t = 0; t < progress.tile_count(); ++t) {
+    if (progress.samples_in_tile(t) == 0) continue;
+    const TileSums& s = progress.tiles[t];
+    for (int y = s.y0; y < s.y1; ++y) {
+      for (int x = s.x0; x < s.x1; ++x) {
+        const std::size_t dst = std::size_t(y) * film.width() + x;
+        sum[dst] += s.sum[s.index(x, y)];
+        weight[dst] += s.weight[s.index(x, y)];
+      }
+    }
+  }
+  for (int y = 0; y < film.height(); ++y) {
+    for (int x = 0; x < film.width(); ++x) {
+      const std::size_t i = std::size_t(y) * film.width() + x;
+      // Every pixel centre has samples within any radius >= 0.5, so the weight is positive
+      // except where a negative lobe (Mitchell) cancels it, or no tile near it has samples yet:
+      // such a pixel is left black.
+      film.at(x, y) = std::abs(weight[i]) > 1e-12f ? sum[i] / weight[i] : Color{0.f};
+    }
+  }
+}
+
+}  // namespace raylab
