@@ -41,16 +41,25 @@ std::size_t RenderProgress::memory_bytes() const {
   return bytes;
 }
 
+std::int64_t progress_tile_count(int width, int height, int tile_size) {
+  return std::int64_t(tiles_across(width, tile_size)) * tiles_across(height, tile_size);
+}
+
+std::size_t progress_pixels(int width, int height, int tile_size, int margin) {
+  std::size_t pixels = 0;
+  const std::int64_t count = progress_tile_count(width, height, tile_size);
+  for (std::int64_t t = 0; t < count; ++t) {
+    const TileSums s = tile_area(static_cast<int>(t), width, height, tile_size, margin);
+    pixels += std::size_t(s.x1 - s.x0) * (s.y1 - s.y0);
+  }
+  return pixels;
+}
+
 std::size_t progress_memory_bytes(int width, int height, int tile_size, int margin) {
   if (width <= 0 || height <= 0 || tile_size <= 0) return 0;
-  const int across = tiles_across(width, tile_size), down = tiles_across(height, tile_size);
-  std::size_t bytes = 0;
-  for (int t = 0; t < across * down; ++t) {
-    const TileSums s = tile_area(t, width, height, tile_size, margin);
-    const std::size_t pixels = std::size_t(s.x1 - s.x0) * (s.y1 - s.y0);
-    bytes += pixels * (sizeof(Color) + (margin > 0 ? sizeof(float) : 0)) + sizeof(TileSums) + 1;
-  }
-  return bytes;
+  const auto count = static_cast<std::size_t>(progress_tile_count(width, height, tile_size));
+  return progress_pixels(width, height, tile_size, margin) * (sizeof(Color) + (margin > 0 ? sizeof(float) : 0)) +
+         count * (sizeof(TileSums) + 1);
 }
 
 RenderProgress start_progress(int width, int height, int tile_size, int spp, int passes, int margin) {

@@ -63,6 +63,13 @@ RenderProgress start_progress(int width, int height, int tile_size, int spp, int
 /// Bytes that start_progress would allocate for these sizes, without allocating them.
 std::size_t progress_memory_bytes(int width, int height, int tile_size, int margin);
 
+/// Number of tiles of side `tile_size` over a `width` x `height` image (all positive).
+std::int64_t progress_tile_count(int width, int height, int tile_size);
+
+/// Pixels summed over the rectangles of all tiles (each tile with its margin, clipped), i.e. the
+/// number of sums start_progress keeps.
+std::size_t progress_pixels(int width, int height, int tile_size, int margin);
+
 /// Develops the image of the samples so far into `film` (which must be `progress`'s size): with
 /// the pixel box, each pixel's sum over its tile's sample count; with wider filters, the tiles'
 /// sums and weights added up in tile order, then divided. Pixels no sample has reached are black.

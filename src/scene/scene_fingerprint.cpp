@@ -1,0 +1,137 @@
+#include "raylab/scene/scene_fingerprint.h"
+
+#include <bit>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "raylab/core/hash64.h"
+
+namespace raylab {
+namespace {
+
+// Shapes hashed as raw bytes must have no padding, whose bytes are not defined: each of these is
+// made of 4-byte floats only.
+template <class T, std::size_t kFloats>
+constexpr bool packed_floats = std::is_trivially_copyable_v<T> && sizeof(T) == kFloats * sizeof(float);
+static_assert(packed_floats<Vec3, 3> && packed_floats<Vec2, 2>);
+static_assert(packed_floats<Triangle, 9> && packed_floats<Sphere, 4> && packed_floats<Cylinder, 8>);
+static_assert(packed_floats<Disk, 7> && packed_floats<Quad, 9>);
+static_assert(sizeof(std::array<Vec3, 3>) == 9 * sizeof(float) && sizeof(std::array<Vec2, 3>) == 6 * sizeof(float));
+
+// Hash64 with the scene's value types: lengths go in with every array, so that moving an element
+// from one array to the next changes the result.
+class Hasher {
+ public:
+  void word(std::uint64_t w) { m_hash.word(w); }
+  void bytes(const void* data, std::size_t n) { m_hash.bytes(data, n); }
+  template <class T>
+  void array(const std::vector<T>& v) {
+    bytes(v.data(), v.size() * sizeof(T));
+  }
+  void number(float f) { word(std::bit_cast<std::uint32_t>(f)); }
+  void number(double d) { word(std::bit_cast<std::uint64_t>(d)); }
+  void number(std::uint64_t i) { word(i); }
+  void number(int i) { word(static_cast<std::uint64_t>(static_cast<std::int64_t>(i))); }
+  void number(bool b) { word(b ? 1u : 0u); }
+  void vec(Vec3 v) { bytes(&v, sizeof v); }
+  void text(const std::string& s) { bytes(s.data(), s.size()); }
+  std::uint64_t value() const { return m_hash.value(); }
+
+ private:
+  Hash64 m_hash;
+};
+
+void hash_geometry(Hasher& h, const Geometry& g) {
+  h.array(g.triangles);
+  h.array(g.spheres);
+  h.array(g.cylinders);
+  h.array(g.disks);
+  h.array(g.quads);
+  for (const auto* objects :
+       {&g.triangle_objects, &g.sphere_objects, &g.cylinder_objects, &g.disk_objects, &g.quad_objects}) {
+    h.array(*objects);
+  }
+  h.array(g.triangle_normals);
+  h.array(g.triangle_uvs);
+  h.number(static_cast<std::uint64_t>(g.groups.size()));  // scenes hold none; structures make them
+}
+
+void hash_material(Hasher& h, const Material& m) {
+  h.text(m.name);
+  h.vec(m.color);
+  for (float f : {m.kd, m.ks, m.shininess, m.reflectivity, m.transmittance, m.ior}) h.number(f);
+  h.vec(m.emission);
+  h.number(m.fresnel);
+  const Texture& t = m.texture;
+  h.number(static_cast<int>(t.kind));
+  h.vec(t.color2);
+  for (float f : {t.scale, t.zone_center.x, t.zone_center.y, t.zone_k, t.zone_radius}) h.number(f);
+  h.number(t.image != nullptr);
+  if (t.image) {
+    h.number(t.image->width());
+    h.number(t.image->height());
+    for (int y = 0; y < t.image->height(); ++y) {
+      for (int x = 0; x < t.image->width(); ++x) h.vec(t.image->texel(x, y));
+    }
+  }
+}
+
+void hash_light(Hasher& h, const Light& l) {
+  h.number(static_cast<int>(l.kind));
+  for (Vec3 v : {l.position, l.direction, l.edge_u, l.edge_v, l.intensity}) h.vec(v);
+  h.number(l.radius);
+  h.number(l.falloff);
+  h.number(l.samples);
+}
+
+void hash_settings(Hasher& h, const RenderSettings& s) {
+  for (int i : {s.width, s.height, s.spp, s.aa_depth, s.max_depth}) h.number(i);
+  h.text(s.sampler);
+  h.text(s.filter);
+  h.number(s.filter_radius);
+  h.number(s.aa_threshold);
+  h.number(s.seed);
+  for (Vec3 c : {s.background, s.horizon, s.ambient}) h.vec(c);
+  h.number(s.sky_gradient);
+}
+
+}  // namespace
+
+std::uint64_t scene_fingerprint(const Scene& scene) {
+  Hasher h;
+  hash_geometry(h, scene.geometry);
+  h.number(static_cast<std::uint64_t>(scene.prototypes.size()));
+  for (const Geometry& p : scene.prototypes) hash_geometry(h, p);
+  h.number(static_cast<std::uint64_t>(scene.instances.size()));
+  for (const Instance& i : scene.instances) {
+    h.number(static_cast<std::uint64_t>(i.prototype));
+    for (const Transform* t : {&i.to_world, &i.to_local}) {
+      for (const auto& row : t->m) {
+        for (double d : row) h.number(d);
+      }
+    }
+    h.number(static_cast<std::uint64_t>(i.first_prim_offset));
+    h.number(static_cast<std::uint64_t>(i.first_object));
+  }
+  h.number(static_cast<std::uint64_t>(scene.objects.size()));
+  for (const SceneObject& o : scene.objects) {
+    h.text(o.name);
+    h.number(static_cast<std::uint64_t>(o.material));
+  }
+  h.number(static_cast<std::uint64_t>(scene.materials.size()));
+  for (const Material& m : scene.materials) hash_material(h, m);
+  h.number(static_cast<std::uint64_t>(scene.lights.size()));
+  for (const Light& l : scene.lights) hash_light(h, l);
+  const CameraSpec& c = scene.camera;
+  for (Vec3 v : {c.from, c.at, c.up}) h.vec(v);
+  h.number(c.vfov_degrees);
+  h.number(static_cast<int>(c.fov_span));
+  h.number(c.hither);
+  h.number(scene.camera_from_file);
+  hash_settings(h, scene.settings);
+  return h.value();
+}
+
+}  // namespace raylab
