@@ -3,6 +3,8 @@
 #include <fmt/core.h>
 #include <unistd.h>
 
+#include <csignal>
+
 #include <algorithm>
 #include <filesystem>
 #include <memory>
@@ -15,7 +17,9 @@
 #include "raylab/accel/factory.h"
 #include "raylab/accel/two_level.h"
 #include "raylab/core/error.h"
+#include "raylab/core/interrupt.h"
 #include "raylab/io/atomic_file.h"
+#include "raylab/io/checkpoint_file.h"
 #include "raylab/io/file_extension.h"
 #include "raylab/io/heatmap.h"
 #include "raylab/io/image_io.h"
@@ -27,6 +31,7 @@
 #include "raylab/sampling/filter.h"
 #include "raylab/sampling/pixel_sampler.h"
 #include "raylab/scene/builtin_scenes.h"
+#include "raylab/scene/scene_fingerprint.h"
 #include "raylab/scene/spd.h"
 
 namespace raylab::cli {
@@ -34,6 +39,7 @@ namespace {
 
 struct RenderArgs {
   std::string scene = "demo";
+  const CLI::Option* scene_option = nullptr;  // to tell a scene given from the default
   std::string output = "render.png";
   std::optional<int> width, height, spp, max_depth;
   std::optional<std::uint64_t> seed;
@@ -42,6 +48,7 @@ struct RenderArgs {
   std::optional<int> aa_depth;
   std::vector<std::string> aovs;
   std::string accel = "bvh";
+  const CLI::Option* accel_option = nullptr;
   AccelArgs structure;
   int threads = 0;
   std::string packets = "on";
@@ -50,7 +57,53 @@ struct RenderArgs {
   bool allow_outside_paths = false;
   bool list_scenes = false;
   bool spd_protocol = false;
+  std::optional<int> passes;
+  std::optional<std::string> checkpoint, resume;
+  double checkpoint_every = 60.0;
 };
+
+// Fills what the command line leaves unsaid from the checkpoint being resumed, so that
+// `raylab render --resume FILE` alone goes on with the same scene and settings.
+void fill_from_checkpoint(RenderArgs& a, const RenderCheckpoint& saved, const std::string& path) {
+  auto value = [&](const char* name) { return saved_setting(saved, name); };
+  auto parse = [&](const char* name, auto convert) {
+    try {
+      return convert(*value(name));
+    } catch (const std::exception&) {
+      throw InputError(path, std::string("the checkpoint's setting '") + name + "' is not a valid value");
+    }
+  };
+  auto fill_int = [&](std::optional<int>& field, const char* name) {
+    if (!field && value(name)) field = parse(name, [](const std::string& v) { return std::stoi(v); });
+  };
+  if (a.scene_option->count() == 0) a.scene = saved.scene;
+  fill_int(a.width, "width");
+  fill_int(a.height, "height");
+  fill_int(a.spp, "spp");
+  fill_int(a.max_depth, "max depth");
+  fill_int(a.passes, "passes");
+  if (!a.seed && value("seed")) a.seed = parse("seed", [](const std::string& v) { return std::stoull(v); });
+  if (!a.sampler && value("sampler")) a.sampler = *value("sampler");
+  if (!a.filter && value("filter")) a.filter = *value("filter");
+  if (!a.filter_radius && value("filter radius")) {
+    a.filter_radius = parse("filter radius", [](const std::string& v) { return std::stof(v); });
+  }
+  if (a.accel_option->count() == 0 && value("accel")) a.accel = *value("accel");
+}
+
+// "3, 5-9, 12": sorted indices as ranges.
+std::string index_ranges(const std::vector<int>& indices) {
+  std::string out;
+  for (std::size_t i = 0; i < indices.size();) {
+    std::size_t j = i;
+    while (j + 1 < indices.size() && indices[j + 1] == indices[j] + 1) ++j;
+    if (!out.empty()) out += ", ";
+    out += std::to_string(indices[i]);
+    if (j > i) out += "-" + std::to_string(indices[j]);
+    i = j + 1;
+  }
+  return out;
+}
 
 std::string human_bytes(std::size_t bytes) {
   if (bytes < 1024) return fmt::format("{} B", bytes);
@@ -137,13 +190,24 @@ void write_outputs(const RenderArgs& args, const Film& film, const RenderResult&
                          beside_output(args.output, ".samples.png"));
 }
 
-int run(const RenderArgs& args) {
-  if (args.list_scenes) {
+int run(const RenderArgs& given) {
+  if (given.list_scenes) {
     list_scenes();
     return 0;
   }
-  if (args.spd_protocol && (args.width || args.height || args.spp || args.max_depth)) {
+  if (given.spd_protocol && (given.width || given.height || given.spp || given.max_depth)) {
     throw UsageError("--spd-protocol fixes the image size, samples and depth (512x512, corner rays, depth 5)");
+  }
+  if (given.spd_protocol && (given.passes || given.checkpoint || given.resume)) {
+    throw UsageError("--spd-protocol renders in one go: no --passes, --checkpoint or --resume");
+  }
+  // Until the render starts there is nothing to save: a signal ends the run at once.
+  install_interrupt_handlers(remove_pending_temporary_files, true);
+  RenderArgs args = given;
+  std::optional<RenderCheckpoint> saved;
+  if (args.resume) {
+    saved = read_checkpoint(*args.resume);
+    fill_from_checkpoint(args, *saved, *args.resume);
   }
   check_image_extension(args.output);  // usage error before any work
   check_writable(args.output);         // input error before any work
@@ -155,6 +219,8 @@ int run(const RenderArgs& args) {
   load.allow_outside_paths = args.allow_outside_paths;
   Scene scene = load_scene(args.scene, load);
   for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
+  // Of the scene as loaded, before the command line's settings (which a checkpoint lists apart).
+  const std::uint64_t fingerprint = scene_fingerprint(scene);
   RenderSettings& s = scene.settings;
   if (args.width) s.width = *args.width;
   if (args.height) s.height = *args.height;
@@ -174,6 +240,30 @@ int run(const RenderArgs& args) {
         sampler);
   }
   check_sampling_settings(s);  // usage errors before any work
+  const bool long_render = args.passes || args.checkpoint || args.resume;
+  if (long_render && is_adaptive_sampler(sampler)) {
+    throw UsageError("--passes, --checkpoint and --resume work with the uniform samplers, not with " + sampler +
+                     " (its refinement needs the whole image at once)");
+  }
+  RenderOptions options;
+  RenderCheckpoint header{
+      args.scene, fingerprint, image_settings(s, sampler, options.tile_size, args.passes.value_or(1), args.accel), {}};
+  RenderProgress progress;
+  if (saved) {
+    const std::vector<std::string> differences = checkpoint_differences(*saved, header);
+    if (!differences.empty()) {
+      std::string message = "cannot resume: this render differs from the checkpoint's";
+      for (const std::string& d : differences) message += "\n  " + d;
+      throw InputError(*args.resume, message);
+    }
+    progress = std::move(saved->progress);
+  }
+  // Where checkpoints go: --checkpoint, else the checkpoint resumed, else beside the output (only
+  // written if the render is interrupted).
+  const std::string checkpoint_path = args.checkpoint ? *args.checkpoint
+                                      : args.resume   ? *args.resume
+                                                      : beside_output(args.output, ".ckpt");
+  check_writable(checkpoint_path);
 
   SceneAccelOptions structure = args.structure.options;
   structure.top = args.accel;
@@ -182,7 +272,6 @@ int run(const RenderArgs& args) {
       make_scene_accelerator(scene.geometry, scene.prototypes, scene.instances, structure);
   if (args.spd_protocol) {
     Film film(kSpdProtocolSize, kSpdProtocolSize);
-    RenderOptions options;
     options.threads = args.threads;
     options.count_traversal = args.stats;
     const SpdProtocolResult result = render_spd_protocol(scene, *accel, film, options);
@@ -196,12 +285,54 @@ int run(const RenderArgs& args) {
   const bool interactive = ::isatty(STDERR_FILENO) != 0;
   std::optional<ProgressBar> bar;
   if (!args.quiet) bar.emplace("render", stderr, interactive);
-  RenderOptions options;
   options.threads = args.threads;
   options.count_traversal = args.stats;
   options.packets = args.packets == "on";
   if (bar) options.on_progress = [&bar](int done, int total) { bar->update(done, total); };
+  const bool uniform = !is_adaptive_sampler(sampler);
+  if (uniform) {
+    options.passes = args.passes.value_or(1);
+    options.progress = &progress;
+    options.should_stop = [] { return interrupt_signal() != 0; };
+    options.on_pass = [&](int done, const Film& image) {
+      write_image(image, args.output);
+      if (!args.quiet)
+        fmt::print(stderr, "{}pass {}/{}: wrote {}\n", interactive ? "\n" : "", done, options.passes, args.output);
+    };
+    if (args.checkpoint || args.resume) {
+      options.checkpoint_seconds = args.checkpoint_every;
+      options.on_checkpoint = [&](const RenderProgress& state) {
+        RenderCheckpoint checkpoint = header;
+        checkpoint.progress = state;
+        try {
+          write_checkpoint(checkpoint_path, checkpoint);
+        } catch (const InputError& e) {  // the render goes on; the next checkpoint may succeed
+          fmt::print(stderr, "\nwarning: checkpoint not written: {}\n", e.what());
+        }
+      };
+    }
+  }
+  // From here the first signal lets the tiles under way finish, then the partial image and a
+  // checkpoint are written; the adaptive samplers cannot stop part-way, so a signal ends them.
+  install_interrupt_handlers(remove_pending_temporary_files, !uniform);
   const RenderResult result = render(scene, *accel, film, options);
+  if (result.interrupted) {
+    const int signal = interrupt_signal();
+    if (bar) bar->finish("interrupted");
+    write_outputs(args, film, result);
+    header.progress = std::move(progress);
+    write_checkpoint(checkpoint_path, header);
+    const RenderProgress& p = header.progress;
+    const std::vector<int> unfinished = p.unfinished_tiles();
+    fmt::print(stderr,
+               "raylab: interrupted by {}: wrote the partial image {} and the checkpoint {}\n"
+               "  pass {} of {}: {} of {} tiles unfinished{}: {}\n"
+               "  resume with the same command and --resume {}\n",
+               signal == SIGTERM ? "SIGTERM" : "SIGINT", args.output, checkpoint_path, p.passes_done + 1, p.passes,
+               unfinished.size(), p.tile_count(), p.passes_done == 0 ? " (black in the image)" : "",
+               index_ranges(unfinished), checkpoint_path);
+    return interrupt_exit_status(signal);
+  }
   const double mrays = result.seconds > 0 ? result.stats.total_rays() / result.seconds * 1e-6 : 0.0;
   const double pixels = static_cast<double>(s.width) * s.height;
   const std::string sampling =
@@ -215,6 +346,11 @@ int run(const RenderArgs& args) {
                             result.stats.total_rays(), mrays));
   for (const std::string& n : result.notices) fmt::print(stderr, "note: {}\n", n);
   write_outputs(args, film, result);
+  // The image is whole: a checkpoint of this render is of no more use.
+  std::error_code removed;
+  if ((args.checkpoint || args.resume) && std::filesystem::remove(checkpoint_path, removed) && !args.quiet) {
+    fmt::print(stderr, "note: removed the checkpoint {} (the render is complete)\n", checkpoint_path);
+  }
   if (args.stats) print_stats(result.stats, accel->info(), result.seconds);
   if (!args.quiet) {
     fmt::print("wrote {} ({}x{}, {}, {} primary rays, --accel {}) in {}\n", args.output, s.width, s.height, sampling,
@@ -228,10 +364,11 @@ int run(const RenderArgs& args) {
 CommandRunner add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image (.png, .exr or .pfm)");
-  cmd->add_option("scene", args->scene,
-                  "Scene: a built-in name (demo, cornell), an SPD generator (spd:balls, spd:balls?size=6), or a "
-                  "file (.json .nff .obj .gltf .glb .ply .off .stl); see --list-scenes")
-      ->capture_default_str();
+  args->scene_option =
+      cmd->add_option("scene", args->scene,
+                      "Scene: a built-in name (demo, cornell), an SPD generator (spd:balls, spd:balls?size=6), or a "
+                      "file (.json .nff .obj .gltf .glb .ply .off .stl); see --list-scenes")
+          ->capture_default_str();
   cmd->add_option("-o,--output", args->output, "Output image; format from the extension: .png .exr .pfm")
       ->capture_default_str();
   cmd->add_option("--width", args->width, "Image width in pixels")->check(CLI::Range(1, 32768));
@@ -260,9 +397,9 @@ CommandRunner add_render_command(CLI::App& app) {
                   "output, else OUTPUT.samples.exr) and a false-colour OUTPUT.samples.png")
       ->check(CLI::IsMember({"samples"}))
       ->delimiter(',');
-  cmd->add_option("--accel", args->accel, "Acceleration structure")
-      ->check(CLI::IsMember(accelerator_choices()))
-      ->capture_default_str();
+  args->accel_option = cmd->add_option("--accel", args->accel, "Acceleration structure")
+                           ->check(CLI::IsMember(accelerator_choices()))
+                           ->capture_default_str();
   add_accel_parameter_options(*cmd, args->structure);
   cmd->add_option("--threads", args->threads, "Worker threads; 0 = all cores")
       ->check(CLI::Range(0, 1024))
@@ -278,6 +415,20 @@ CommandRunner add_render_command(CLI::App& app) {
       ->check([](const std::string& v) { return v.starts_with('-') ? "the seed must not be negative" : ""; });
   cmd->add_option("--max-depth", args->max_depth, "Ray tree depth; 1 = eye rays only (default 5)")
       ->check(CLI::Range(1, 64));
+  cmd->add_option("--passes", args->passes,
+                  "Take the samples in this many passes over the whole image, writing the image after each "
+                  "(uniform samplers; 1 to spp)")
+      ->check(CLI::Range(1, 1 << 16));
+  cmd->add_option("--checkpoint", args->checkpoint,
+                  "Save the render's progress to this file every --checkpoint-every seconds (removed when the "
+                  "render completes); an interrupted render always saves one (default: OUTPUT.ckpt)");
+  cmd->add_option("--checkpoint-every", args->checkpoint_every, "Seconds between checkpoints")
+      ->check(CLI::Range(0.001, 1e9))
+      ->capture_default_str();
+  cmd->add_option("--resume", args->resume,
+                  "Go on with the render saved in this checkpoint (settings not given are taken from it; a "
+                  "checkpoint of another scene or other settings is refused); the image is byte-identical to an "
+                  "uninterrupted render");
   cmd->add_flag("--stats", args->stats, "Print ray counts, traversal work and timings after the render");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress bar and no summary");
   cmd->add_flag("--allow-outside-paths", args->allow_outside_paths,

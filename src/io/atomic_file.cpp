@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -13,6 +14,44 @@
 
 namespace raylab {
 namespace {
+
+// The temporaries of the writes under way, for remove_pending_temporary_files: a few slots, each a
+// name in a fixed buffer (no allocation, nothing a signal handler could find half-changed: a slot
+// is marked in use only once its name is complete, and freed before the name is reused).
+constexpr int kPendingSlots = 8;
+struct PendingSlot {
+  std::atomic<bool> in_use{false};
+  std::atomic<bool> armed{false};
+  char name[4096] = {};
+};
+PendingSlot g_pending[kPendingSlots];
+
+// Registers temporary `name` while a write is under way; unregisters on destruction. When every
+// slot is taken the write goes on unregistered (only a signal at that moment would leave it behind).
+class PendingTemporary {
+ public:
+  explicit PendingTemporary(const std::string& name) {
+    if (name.size() >= sizeof(PendingSlot::name)) return;
+    for (PendingSlot& slot : g_pending) {
+      bool expected = false;
+      if (!slot.in_use.compare_exchange_strong(expected, true)) continue;
+      std::memcpy(slot.name, name.c_str(), name.size() + 1);
+      slot.armed.store(true);
+      m_slot = &slot;
+      return;
+    }
+  }
+  ~PendingTemporary() {
+    if (m_slot == nullptr) return;
+    m_slot->armed.store(false);
+    m_slot->in_use.store(false);
+  }
+  PendingTemporary(const PendingTemporary&) = delete;
+  PendingTemporary& operator=(const PendingTemporary&) = delete;
+
+ private:
+  PendingSlot* m_slot = nullptr;
+};
 
 std::string parent_folder(const std::string& path) {
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
@@ -45,6 +84,7 @@ void write_file_atomically(const std::string& path, std::span<const unsigned cha
   const int fd = ::mkstemps(name.data(), 4);
   if (fd < 0) throw InputError(path, std::string("cannot create temporary file: ") + std::strerror(errno));
   temp.assign(name.data());
+  const PendingTemporary pending(temp);
   auto fail = [&](const char* what) {
     const int err = errno;
     ::close(fd);
@@ -71,6 +111,12 @@ void write_file_atomically(const std::string& path, std::span<const unsigned cha
     const int err = errno;
     ::unlink(temp.c_str());
     throw InputError(path, std::string("cannot rename temporary file into place: ") + std::strerror(err));
+  }
+}
+
+void remove_pending_temporary_files() noexcept {
+  for (PendingSlot& slot : g_pending) {
+    if (slot.armed.load()) ::unlink(slot.name);  // gone already once renamed into place: harmless
   }
 }
 

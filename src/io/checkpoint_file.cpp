@@ -1,6 +1,7 @@
 #include "raylab/io/checkpoint_file.h"
 
 #include <bit>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <string_view>
@@ -188,6 +189,30 @@ void write_checkpoint(const std::string& path, const RenderCheckpoint& checkpoin
 RenderCheckpoint read_checkpoint(const std::string& path) {
   const std::string bytes = read_file(path);
   return decode_checkpoint(std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()), path);
+}
+
+std::vector<std::pair<std::string, std::string>> image_settings(const RenderSettings& s, const std::string& sampler,
+                                                                int tile_size, int passes, const std::string& accel) {
+  char radius[32];
+  std::snprintf(radius, sizeof radius, "%.9g", static_cast<double>(s.filter_radius));
+  return {{"width", std::to_string(s.width)},
+          {"height", std::to_string(s.height)},
+          {"spp", std::to_string(s.spp)},
+          {"sampler", sampler},
+          {"filter", s.filter},
+          {"filter radius", radius},
+          {"seed", std::to_string(s.seed)},
+          {"max depth", std::to_string(s.max_depth)},
+          {"tile size", std::to_string(tile_size)},
+          {"passes", std::to_string(passes)},
+          {"accel", accel}};
+}
+
+const std::string* saved_setting(const RenderCheckpoint& saved, const std::string& name) {
+  for (const auto& [saved_name, value] : saved.settings) {
+    if (saved_name == name) return &value;
+  }
+  return nullptr;
 }
 
 std::vector<std::string> checkpoint_differences(const RenderCheckpoint& saved, const RenderCheckpoint& now) {

@@ -12,6 +12,11 @@ namespace raylab {
 /// untouched, and InputError says why (missing folder, no permission, disk full).
 void write_file_atomically(const std::string& path, std::span<const unsigned char> bytes);
 
+/// Removes the temporary files of the atomic writes under way, if any. Async-signal-safe (only
+/// unlink), for a signal handler about to end the process: the targets stay as they were, and no
+/// stray temporary is left beside them.
+void remove_pending_temporary_files() noexcept;
+
 /// Fails early, with the same InputError a write would give, when `path` cannot be written
 /// (its folder is missing or not writable). Creates nothing.
 void check_writable(const std::string& path);

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "raylab/render/render_progress.h"
+#include "raylab/scene/render_settings.h"
 
 namespace raylab {
 
@@ -45,6 +46,16 @@ void write_checkpoint(const std::string& path, const RenderCheckpoint& checkpoin
 
 /// Reads checkpoint file `path` (InputError when missing, unreadable or damaged).
 RenderCheckpoint read_checkpoint(const std::string& path);
+
+/// The settings of a render that decide its image, as a checkpoint records them (names and values
+/// as text, in this order): width, height, spp, sampler (resolved), filter, filter radius, seed,
+/// max depth, tile size, passes, accel.
+std::vector<std::pair<std::string, std::string>> image_settings(const RenderSettings& settings,
+                                                                const std::string& sampler, int tile_size, int passes,
+                                                                const std::string& accel);
+
+/// The value `saved` records for setting `name`, or null.
+const std::string* saved_setting(const RenderCheckpoint& saved, const std::string& name);
 
 /// How `saved` differs from `now` in scene and settings, one line per difference (e.g. "spp: 16
 /// in the checkpoint, 64 now"); empty when the checkpoint can be resumed.
