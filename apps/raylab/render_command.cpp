@@ -37,6 +37,13 @@
 namespace raylab::cli {
 namespace {
 
+std::string human_bytes(std::size_t bytes) {
+  if (bytes < 1024) return fmt::format("{} B", bytes);
+  if (bytes < 1024 * 1024) return fmt::format("{:.1f} KiB", bytes / 1024.0);
+  if (bytes < std::size_t(1) << 30) return fmt::format("{:.1f} MiB", bytes / (1024.0 * 1024.0));
+  return fmt::format("{:.1f} GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+}
+
 struct RenderArgs {
   std::string scene = "demo";
   const CLI::Option* scene_option = nullptr;  // to tell a scene given from the default
@@ -60,7 +67,53 @@ struct RenderArgs {
   std::optional<int> passes;
   std::optional<std::string> checkpoint, resume;
   double checkpoint_every = 60.0;
+  std::optional<std::string> max_memory;
 };
+
+// Bytes in a size such as "512M", "8G", "1.5T" or "1000000" (powers of 1024); nullopt when it
+// is not one.
+std::optional<std::size_t> parse_byte_size(const std::string& text) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  const std::string unit = text.substr(used);
+  double scale = 1;
+  if (unit == "K" || unit == "k" || unit == "KiB")
+    scale = 1024.0;
+  else if (unit == "M" || unit == "MiB")
+    scale = 1024.0 * 1024;
+  else if (unit == "G" || unit == "GiB")
+    scale = 1024.0 * 1024 * 1024;
+  else if (unit == "T" || unit == "TiB")
+    scale = 1024.0 * 1024 * 1024 * 1024;
+  else if (!unit.empty() && unit != "B")
+    return std::nullopt;
+  const double bytes = value * scale;
+  if (!(bytes > 0) || bytes > 1e18) return std::nullopt;
+  return static_cast<std::size_t>(bytes);
+}
+
+// The default memory limit: 80% of this machine's physical memory.
+std::size_t default_memory_limit() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page <= 0) return std::size_t(1) << 40;  // unknown: no practical limit
+  return static_cast<std::size_t>(static_cast<double>(pages) * static_cast<double>(page) * 0.8);
+}
+
+// Refuses (UsageError) a render whose estimated memory exceeds the limit, with both figures.
+void check_memory(const RenderMemoryEstimate& e, std::uint64_t primitives, const std::optional<std::string>& max) {
+  const std::size_t limit = max ? *parse_byte_size(*max) : default_memory_limit();
+  if (e.total() <= limit) return;
+  throw UsageError(fmt::format(
+      "this render would need about {} (image {}, per-tile sums {}, acceleration structure {} for {} primitives; "
+      "{} primary samples), more than the limit of {}{}; lower --width or --height, or raise --max-memory",
+      human_bytes(e.total()), human_bytes(e.image), human_bytes(e.sums), human_bytes(e.accelerator), primitives,
+      e.samples, human_bytes(limit), max ? " (--max-memory)" : " (80% of this machine's memory)"));
+}
 
 // Fills what the command line leaves unsaid from the checkpoint being resumed, so that
 // `raylab render --resume FILE` alone goes on with the same scene and settings.
@@ -105,12 +158,6 @@ std::string index_ranges(const std::vector<int>& indices) {
   return out;
 }
 
-std::string human_bytes(std::size_t bytes) {
-  if (bytes < 1024) return fmt::format("{} B", bytes);
-  if (bytes < 1024 * 1024) return fmt::format("{:.1f} KiB", bytes / 1024.0);
-  return fmt::format("{:.1f} MiB", bytes / (1024.0 * 1024.0));
-}
-
 void print_stats(const RenderStats& s, const AccelInfo& info, double seconds) {
   fmt::print("{:<12}{:>14}{:>14}\n", "rays", "cast", "hit");
   for (int k = 0; k < static_cast<int>(RayKind::kCount); ++k) {
@@ -120,6 +167,7 @@ void print_stats(const RenderStats& s, const AccelInfo& info, double seconds) {
   for (auto h : s.ray_hits) hits += h;
   const double total = static_cast<double>(s.total_rays());
   fmt::print("{:<12}{:>14}{:>14}\n", "total", s.total_rays(), hits);
+  fmt::print("non-finite samples        {} (NaN or infinite radiance, replaced by black)\n", s.nonfinite_samples);
   fmt::print("nodes visited per ray     {:.2f}\n", total > 0 ? s.traversal.nodes_visited / total : 0.0);
   fmt::print("primitive tests per ray   {:.2f}\n", total > 0 ? s.traversal.prim_tests / total : 0.0);
   if (s.traversal.volume_tests > 0) {
@@ -264,6 +312,10 @@ int run(const RenderArgs& given) {
                                       : args.resume   ? *args.resume
                                                       : beside_output(args.output, ".ckpt");
   check_writable(checkpoint_path);
+  // Before the accelerator or the image is allocated: refuse what cannot fit. (The checkpoint
+  // callback is set here for the estimate to count the copies it takes; the real one comes below.)
+  if (args.checkpoint || args.resume) options.on_checkpoint = [](const RenderProgress&) {};
+  check_memory(estimate_render_memory(scene, options), scene.primitive_count(), args.max_memory);
 
   SceneAccelOptions structure = args.structure.options;
   structure.top = args.accel;
@@ -345,6 +397,10 @@ int run(const RenderArgs& given) {
     bar->finish(fmt::format("{}x{}, {}, {} rays ({:.2f} Mrays/s)", s.width, s.height, sampling,
                             result.stats.total_rays(), mrays));
   for (const std::string& n : result.notices) fmt::print(stderr, "note: {}\n", n);
+  if (result.stats.nonfinite_samples > 0) {
+    fmt::print(stderr, "warning: {} samples had NaN or infinite radiance and were replaced by black\n",
+               result.stats.nonfinite_samples);
+  }
   write_outputs(args, film, result);
   // The image is whole: a checkpoint of this render is of no more use.
   std::error_code removed;
@@ -429,6 +485,10 @@ CommandRunner add_render_command(CLI::App& app) {
                   "Go on with the render saved in this checkpoint (settings not given are taken from it; a "
                   "checkpoint of another scene or other settings is refused); the image is byte-identical to an "
                   "uninterrupted render");
+  cmd->add_option("--max-memory", args->max_memory,
+                  "Refuse a render whose estimated memory exceeds this (e.g. 512M, 8G; default: 80% of the "
+                  "machine's memory)")
+      ->check([](const std::string& v) { return parse_byte_size(v) ? "" : "expected a size such as 512M or 8G"; });
   cmd->add_flag("--stats", args->stats, "Print ray counts, traversal work and timings after the render");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress bar and no summary");
   cmd->add_flag("--allow-outside-paths", args->allow_outside_paths,

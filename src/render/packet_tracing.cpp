@@ -42,12 +42,12 @@ void PrimaryPacketTracer::trace(std::span<const Ray> rays, std::span<const std::
 
   for (std::size_t i = 0; i < n; ++i) {
     if (!m_hits[i].valid()) {
-      out[i] = WhittedIntegrator::background(scene.settings, m_rays[i].direction);
+      out[i] = finite_radiance(m_ctx, WhittedIntegrator::background(scene.settings, m_rays[i].direction));
       continue;
     }
     Pcg32 rng(seeds[i]);
     const std::span<const ShadowAnswer> answers(m_answers.data() + i * light_count, light_count);
-    out[i] = WhittedIntegrator::shade(m_ctx, m_rays[i], m_surfaces[i], 1, rng, answers);
+    out[i] = finite_radiance(m_ctx, WhittedIntegrator::shade(m_ctx, m_rays[i], m_surfaces[i], 1, rng, answers));
   }
 }
 

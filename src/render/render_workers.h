@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <vector>
 
 #include "raylab/core/rng.h"
@@ -129,12 +130,21 @@ inline RenderResult finish_render(RenderWorkers& workers, std::chrono::steady_cl
   return result;
 }
 
+/// A sample's radiance `c` as it goes into the image: black when some component is NaN or
+/// infinite (counted in ctx.stats.nonfinite_samples), else `c` itself.
+inline Color finite_radiance(const TraceContext& ctx, Color c) {
+  if (std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z)) return c;
+  ++ctx.stats.nonfinite_samples;
+  return Color{0.f};
+}
+
 /// The radiance of the primary ray through image position (x, y), with every random choice along
-/// it seeded by `path_seed`; `feature` (optional) receives what the ray hit first.
+/// it seeded by `path_seed` (NaN or infinite radiance counted and replaced by black); `feature`
+/// (optional) receives what the ray hit first.
 inline Color trace_image_position(const TraceContext& ctx, const Camera& camera, float x, float y,
                                   std::uint64_t path_seed, PrimaryFeature* feature = nullptr) {
   Pcg32 rng(path_seed);
-  return WhittedIntegrator::trace(ctx, camera.generate(x, y), 1, RayKind::kPrimary, rng, feature);
+  return finite_radiance(ctx, WhittedIntegrator::trace(ctx, camera.generate(x, y), 1, RayKind::kPrimary, rng, feature));
 }
 
 }  // namespace raylab::detail

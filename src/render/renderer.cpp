@@ -223,6 +223,28 @@ void check_sampling_settings(const RenderSettings& s) {
   }
 }
 
+RenderMemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& options) {
+  const RenderSettings& s = scene.settings;
+  RenderMemoryEstimate e;
+  const auto pixels =
+      static_cast<std::uint64_t>(std::max(0, s.width)) * static_cast<std::uint64_t>(std::max(0, s.height));
+  e.samples = pixels * static_cast<std::uint64_t>(std::max(1, s.spp));
+  // The film, the samples-per-pixel counts, and the output as floats (EXR, PFM) while encoding.
+  e.image = pixels * (sizeof(Color) + sizeof(std::uint32_t) + sizeof(Color));
+  const std::string name = resolve_sampler_name(s);
+  if (is_adaptive_sampler(name)) {
+    e.sums = pixels * 2 * sizeof(Color);  // its per-pixel sample records, about the film's size twice
+  } else {
+    const Filter filter = make_filter(s.filter, s.filter_radius);
+    const int margin = is_pixel_box(filter) ? 0 : static_cast<int>(std::ceil(filter.radius() - 0.5f));
+    e.sums = progress_memory_bytes(s.width, s.height, std::max(1, options.tile_size), margin);
+    // A checkpoint copies the state, and its file's bytes are about the same size again.
+    if (options.on_checkpoint) e.sums *= 3;
+  }
+  e.accelerator = static_cast<std::size_t>(scene.primitive_count()) * kAccelBytesPerPrimitive;
+  return e;
+}
+
 RenderResult render(const Scene& scene, const Accelerator& accel, Film& film, const RenderOptions& options) {
   const RenderSettings& s = scene.settings;
   check_sampling_settings(s);

@@ -1,5 +1,6 @@
 #include "raylab/render/whitted.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "raylab/geometry/shading.h"
@@ -169,7 +170,8 @@ Color WhittedIntegrator::shade(const TraceContext& ctx, const Ray& ray, const Su
     result += shade_light(ctx, scene.lights[l], m, base, si.position, n, ng, view, rng, answer);
   }
 
-  if (depth >= scene.settings.max_depth) return result;
+  // Capped whatever the settings say: each level is a frame of this recursion on the stack.
+  if (depth >= std::min(scene.settings.max_depth, WhittedIntegrator::kMaxDepth)) return result;
 
   float reflect_weight = m.reflectivity;
   float refract_weight = 0.f;

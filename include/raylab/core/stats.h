@@ -35,6 +35,9 @@ struct RenderStats {
   std::uint64_t rays[static_cast<int>(RayKind::kCount)] = {};      ///< rays cast, by kind
   std::uint64_t ray_hits[static_cast<int>(RayKind::kCount)] = {};  ///< of which hit something
   TraversalStats traversal;  ///< summed over every ray (zero unless counting was enabled)
+  /// Samples whose radiance came out NaN or infinite (from any path of the sample's ray tree);
+  /// each was replaced by black, so that one bad sample cannot poison its pixel.
+  std::uint64_t nonfinite_samples = 0;
 
   /// Counts one ray of `kind`, and whether it hit.
   constexpr void count(RayKind kind, bool hit) {
@@ -54,6 +57,7 @@ struct RenderStats {
       ray_hits[i] += o.ray_hits[i];
     }
     traversal += o.traversal;
+    nonfinite_samples += o.nonfinite_samples;
     return *this;
   }
 };

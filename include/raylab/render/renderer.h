@@ -85,6 +85,25 @@ std::string resolve_sampler_name(const RenderSettings& settings);
 /// within the pixel). render() checks this too; callers check first to fail before any work.
 void check_sampling_settings(const RenderSettings& settings);
 
+/// What a render will allocate, estimated from the scene's primitive count and settings before
+/// anything is allocated, so that an impossible render is refused up front.
+struct RenderMemoryEstimate {
+  std::uint64_t samples = 0;    ///< width x height x spp: primary samples (adaptive: at most)
+  std::size_t image = 0;        ///< the film, the per-pixel sample counts, the encoded output
+  std::size_t sums = 0;         ///< the per-tile sums, and the copies checkpoints take of them
+  std::size_t accelerator = 0;  ///< the acceleration structure and its build's arrays
+  /// Everything above.
+  std::size_t total() const { return image + sums + accelerator; }
+};
+
+/// Bytes per primitive the estimate allows for an acceleration structure and its build: generous
+/// (the wide BVH keeps 60-70 bytes per triangle and its build about as much again; grids and
+/// octrees on dense scenes more).
+inline constexpr std::size_t kAccelBytesPerPrimitive = 512;
+
+/// The memory a render of `scene` (at its settings) with `options` will need.
+RenderMemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& options);
+
 /// Renders `scene` with `accel` into `film` (which must match the settings' size). The image is
 /// the same for any thread count and tile order: every sample is seeded by its pixel and index.
 /// The sampler, filter and adaptive parameters come from scene.settings; unknown names and

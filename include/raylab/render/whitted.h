@@ -45,6 +45,10 @@ enum class ShadowAnswer : std::uint8_t {
 ///  - Area lights: `Light::samples` stratified shadow rays, randomised by `rng`.
 class WhittedIntegrator {
  public:
+  /// The deepest ray tree any render traces, whatever RenderSettings::max_depth says (the scene
+  /// files and the command line accept 1 to 64 as well): the integrator recurses once per level.
+  static constexpr int kMaxDepth = 64;
+
   /// Radiance arriving along `ray` (ray kind `kind`, at depth `depth` >= 1). When `feature` is
   /// given, it receives what `ray` itself hit (not what later bounces hit).
   static Color trace(const TraceContext& ctx, Ray ray, int depth, RayKind kind, Pcg32& rng,
