@@ -1,5 +1,6 @@
 // raylab command line: parses arguments, runs one subcommand, maps errors to exit codes.
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
@@ -7,6 +8,9 @@
 #include "raylab/core/error.h"
 
 int main(int argc, char** argv) {
+  // A write past the file-size limit (ulimit -f) then fails with EFBIG, which the atomic writer
+  // reports and cleans up after, instead of SIGXFSZ killing the process and leaving a temporary.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"raylab: a ray tracing engine and lab for efficiency and quality"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "raylab 0.1.0");

@@ -1,0 +1,77 @@
+// Atomic output when the disk refuses: a write that fails part-way (here the file-size limit,
+// RLIMIT_FSIZE, which fails write() with EFBIG just as a full disk fails it with ENOSPC) leaves the
+// previous file byte for byte, no temporary beside it, and a message that says why; through the
+// command line too, for an image and a checkpoint. (Refused permissions cannot be tested here: the
+// tests run as root, whom permissions do not stop.)
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "../cli/cli_fixture.h"
+#include "raylab/core/error.h"
+#include "raylab/io/atomic_file.h"
+
+namespace raylab {
+namespace {
+
+using cli_test::entries;
+using cli_test::read_text;
+using cli_test::write_text;
+
+class AtomicWrite : public cli_test::Cli {};
+
+TEST_F(AtomicWrite, AWriteTheDiskRefusesKeepsThePreviousFile) {
+  const std::string target = out_file("image.bin");
+  write_text(target, "the previous, complete file");
+  const pid_t child = ::fork();
+  if (child == 0) {
+    // In the child only: writes beyond 4 KiB fail (EFBIG) instead of raising SIGXFSZ.
+    ::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{4096, 4096};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    const std::vector<unsigned char> big(1 << 20, 0x5A);
+    try {
+      write_file_atomically(target, big);
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      // Says which file and why.
+      ::_exit(message.find("image.bin") != std::string::npos && message.find("write failed") != std::string::npos ? 0
+                                                                                                                  : 2);
+    }
+    ::_exit(1);  // no error at all: wrong
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "1: the write did not fail; 2: the message does not say what and why";
+  EXPECT_EQ(read_text(target), "the previous, complete file");
+  EXPECT_EQ(entries(out()), std::vector<std::string>{"image.bin"}) << "no temporary left beside it";
+}
+
+TEST_F(AtomicWrite, ARenderWhoseImageCannotBeWrittenKeepsThePreviousImage) {
+  const std::string image = out_file("render.pfm");
+  ASSERT_EQ(run("render demo --width 16 --height 8 -q -o " + image).code, 0);
+  const std::string previous = read_text(image);
+  // 64x64 floats need 48 KiB; the shell's file-size limit allows 8 KiB.
+  const std::string command = "ulimit -f 8; '" + std::string(RAYLAB_BINARY) +
+                              "' render demo --width 64 --height 64 -q -o '" + image + "' 2>'" +
+                              (work() / "err.txt").string() + "'";
+  const int status = std::system(("bash -c \"" + command + "\"").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  const std::string err = read_text(work() / "err.txt");
+  EXPECT_NE(err.find("render.pfm"), std::string::npos) << err;
+  EXPECT_NE(err.find("File too large"), std::string::npos) << err;
+  EXPECT_EQ(read_text(image), previous);
+  EXPECT_EQ(entries(out()), std::vector<std::string>{"render.pfm"});
+}
+
+}  // namespace
+}  // namespace raylab
