@@ -62,7 +62,7 @@ int read_int(BinaryReader& in, std::string_view what, int lo, int hi) {
 void read_floats(BinaryReader& in, std::string_view bytes, float* out, std::size_t n, std::string_view what) {
   const std::size_t at = in.offset();
   in.skip(n * sizeof(float), what);
-  std::memcpy(out, bytes.data() + at, n * sizeof(float));
+  if (n > 0) std::memcpy(out, bytes.data() + at, n * sizeof(float));  // `out` is null for no weights
 }
 
 }  // namespace
