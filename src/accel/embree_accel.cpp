@@ -1,5 +1,6 @@
 #include "raylab/accel/embree_accel.h"
 
+#include "raylab/accel/brute_force.h"
 #include "raylab/core/error.h"
 
 #if defined(RAYLAB_HAVE_EMBREE)
@@ -39,6 +40,8 @@
 //   user callbacks are given the real tmin and tmax through the query context.
 // - Ties: Embree resolves equal distances between its own primitives in traversal order, not by
 //   our lower-id rule; the user callbacks do apply the rule against the closest hit so far.
+// - Rays Embree cannot take (NaN, infinite or huge components beyond its 1.844e18, tmin < 0) are
+//   answered by brute force over the same primitives (embree_traces).
 // - Counting: Embree exposes no traversal counts, so intersect_counted / occluded_counted count
 //   hits only and leave nodes_visited and prim_tests at 0 (compare shows "n/a").
 
@@ -217,6 +220,17 @@ void keep_exact_hits(const RTCFilterFunctionNArguments* args) {
 float embree_tnear(float tmin) { return std::max(0.f, tmin - std::fabs(tmin) * 0x1p-20f); }
 float embree_tfar(float tmax) { return tmax + std::fabs(tmax) * 0x1p-20f; }
 
+// Whether Embree can trace `r`. Its traversal asserts (RayK::valid) origin and direction
+// components within +-1.844e18 (its FLT_LARGE) and limits that are not NaN, and its interval is
+// [0, inf]: a NaN, infinite or huge component aborted the process in Debian's Embree, which is
+// built with assertions, and tmin < 0 was clamped to 0. Such rays are answered by brute force
+// over the same primitives instead: rare, and then exactly as every other structure answers.
+bool embree_traces(const Ray& r) {
+  constexpr float kLarge = 1.844e18f;
+  auto within = [](Vec3 v) { return std::fabs(v.x) <= kLarge && std::fabs(v.y) <= kLarge && std::fabs(v.z) <= kLarge; };
+  return within(r.origin) && within(r.direction) && r.tmin >= 0.f && r.tmax >= r.tmin;  // false for NaN
+}
+
 RTCRay embree_ray(const Ray& r) {
   RTCRay e{};
   e.org_x = r.origin.x, e.org_y = r.origin.y, e.org_z = r.origin.z;
@@ -257,7 +271,8 @@ class EmbreeAccel final : public Accelerator {
  private:
   void build();
 
-  SceneIds m_ids;  // the callbacks point here: the object must not move (it is never copied)
+  SceneIds m_ids;            // the callbacks point here: the object must not move (it is never copied)
+  BruteForce m_untraceable;  // answers the rays Embree cannot take (embree_traces)
   RTCDevice m_device = nullptr;
   RTCScene m_scene = nullptr;
   Box3 m_bounds;
@@ -265,7 +280,7 @@ class EmbreeAccel final : public Accelerator {
   long long m_embree_bytes = 0;
 };
 
-EmbreeAccel::EmbreeAccel(const Geometry& geometry, std::span<const std::uint32_t> ids) {
+EmbreeAccel::EmbreeAccel(const Geometry& geometry, std::span<const std::uint32_t> ids) : m_untraceable(geometry, ids) {
   const auto start = std::chrono::steady_clock::now();
   m_ids.geometry = &geometry;
   for (std::uint32_t id : ids) {
@@ -350,6 +365,7 @@ EmbreeAccel::~EmbreeAccel() {
 }
 
 bool EmbreeAccel::intersect(Ray& ray, Hit& hit) const {
+  if (!embree_traces(ray)) return m_untraceable.intersect(ray, hit);
   QueryContext query;
   rtcInitIntersectContext(&query.embree);
   query.tmin = ray.tmin;
@@ -375,6 +391,7 @@ bool EmbreeAccel::intersect(Ray& ray, Hit& hit) const {
 }
 
 bool EmbreeAccel::occluded(const Ray& ray) const {
+  if (!embree_traces(ray)) return m_untraceable.occluded(ray);
   QueryContext query;
   rtcInitIntersectContext(&query.embree);
   query.tmin = ray.tmin;
@@ -389,9 +406,10 @@ AccelInfo EmbreeAccel::info() const {
   AccelInfo info;
   info.name = "embree";
   info.build_seconds = m_build_seconds;
-  // What Embree allocated for the scene (BVH, buffers) plus the id maps kept here.
+  // What Embree allocated for the scene (BVH, buffers) plus the id maps kept here (the fallback's too).
   info.memory_bytes = static_cast<std::size_t>(std::max(0ll, m_embree_bytes)) + sizeof(*this) +
-                      (m_ids.triangles.capacity() + m_ids.others.capacity()) * sizeof(std::uint32_t);
+                      (m_ids.triangles.capacity() + m_ids.others.capacity()) * sizeof(std::uint32_t) +
+                      m_untraceable.info().memory_bytes - sizeof(BruteForce);
   info.primitive_count = m_ids.triangles.size() + m_ids.others.size();
   return info;
 }

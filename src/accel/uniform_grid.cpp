@@ -176,14 +176,18 @@ bool UniformGrid::traverse(Ray& ray, Hit& hit, TraversalStats* stats, Walk& w, M
       const int out = t_face[0] == t_leave ? 0 : (t_face[1] == t_leave ? 1 : 2);
       // ...and on the way crosses the other axes' boundaries that come before that face: their
       // number is estimated from the distance, then settled on the boundaries' own values, so
-      // that the walk arrives in the very cell it would have reached step by step.
+      // that the walk arrives in the very cell it would have reached step by step. The estimate
+      // is capped before it becomes an int: for a huge direction component (|d| near FLT_MAX)
+      // inv_delta overflows to inf and the estimate with it, and converting inf (undefined
+      // behaviour) gave INT_MIN and a cell index far outside the grid. The settling then walks
+      // as far as such an estimate is off (at most to_face steps; one for ordinary rays).
       for (int a = 0; a < 3; ++a) {
         int k = to_face[a] + 1;
         if (a != out) {
           const float estimate = (t_leave - t_next[a]) * w.inv_delta[a];
-          k = estimate > 0.f ? std::min(static_cast<int>(std::ceil(estimate)), to_face[a]) : 0;
-          if (k > 0 && boundary(a, crossed[a] + k - 1) >= t_leave) --k;
-          if (k < to_face[a] && boundary(a, crossed[a] + k) < t_leave) ++k;
+          k = estimate > 0.f ? static_cast<int>(std::ceil(std::min(estimate, float(to_face[a])))) : 0;
+          while (k > 0 && boundary(a, crossed[a] + k - 1) >= t_leave) --k;
+          while (k < to_face[a] && boundary(a, crossed[a] + k) < t_leave) ++k;
         }
         crossed[a] += k;
         w.cell[a] += k * w.dir[a];

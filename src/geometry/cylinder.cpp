@@ -26,7 +26,11 @@ bool intersect_cylinder(const Cylinder& cyl, const Ray& ray, float tmin, float t
 
   double roots[2];
   int count = 0;
-  if (std::fabs(a) < 1e-12 * (std::fabs(b) + std::fabs(c) + 1e-30)) {
+  // a is quadratic in the direction, b linear, c independent of it: a is compared with |d|^2
+  // alone, so that the test does not depend on the direction's length (against |b| + |c|, every
+  // direction shorter than about 1e-6 counted as parallel, and got a wrong root). `<=` keeps a
+  // zero direction (a = 0, b = 0) on this branch, which rejects it.
+  if (std::fabs(a) <= 1e-12 * (dx * dx + dy * dy + dz * dz)) {
     if (b == 0.0) return false;
     roots[count++] = -c / b;  // ray parallel to a generating line of the cone
   } else {

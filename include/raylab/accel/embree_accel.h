@@ -18,9 +18,10 @@ bool embree_available();
 /// it: triangles as Embree triangles (robust mode, watertight like ours), everything else as user
 /// geometry calling back into `geometry`. Hits are in our convention (global ids, u and v the
 /// weights of p1 and p2, [tmin, tmax)); equal-distance ties between triangles follow Embree's
-/// traversal order, not the lower-id rule. Counted queries count hits only (Embree exposes no
-/// traversal counts). Safe to query from many threads. Throws UsageError when raylab was built
-/// without Embree, std::runtime_error when Embree fails.
+/// traversal order, not the lower-id rule. Rays Embree cannot trace (NaN, infinite or huge
+/// components, tmin < 0) are answered by brute force over the same ids. Counted queries count
+/// hits only (Embree exposes no traversal counts). Safe to query from many threads. Throws
+/// UsageError when raylab was built without Embree, std::runtime_error when Embree fails.
 std::unique_ptr<Accelerator> make_embree_accelerator(const Geometry& geometry, std::span<const std::uint32_t> ids);
 
 }  // namespace raylab

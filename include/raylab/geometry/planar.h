@@ -31,7 +31,9 @@ inline bool intersect_disk(const Disk& d, const Ray& ray, float tmin, float tmax
   const float th = dot(d.center - ray.origin, d.normal) / denom;
   if (!(th >= tmin && th < tmax)) return false;
   const Vec3 r = ray.at(th) - d.center;
-  if (dot(r, r) > d.radius * d.radius) return false;
+  // Written to reject NaN: an infinite direction component gives th = +-0 and r = NaN, and every
+  // disk not parallel to such a ray was hit at t = 0, wherever it lay.
+  if (!(dot(r, r) <= d.radius * d.radius)) return false;
   t = th;
   return true;
 }

@@ -20,6 +20,9 @@ struct Sphere {
 /// discriminant from the distance of the centre to the ray line, and no cancellation in the
 /// nearer root.
 inline bool intersect_sphere(const Sphere& s, const Ray& ray, float tmin, float tmax, float& t) {
+  // A radius whose square underflows (below about 1e-22) leaves nothing to compare: every
+  // quantity below rounds to 0, the discriminant with them, and every ray would hit at t = 0.
+  if (!(s.radius * s.radius > 0.f)) return false;
   const Vec3 f = ray.origin - s.center;
   const Vec3 d = ray.direction;
   const float a = dot(d, d);
