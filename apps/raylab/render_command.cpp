@@ -312,9 +312,20 @@ int run(const RenderArgs& given) {
                                       : args.resume   ? *args.resume
                                                       : beside_output(args.output, ".ckpt");
   check_writable(checkpoint_path);
-  // Before the accelerator or the image is allocated: refuse what cannot fit. (The checkpoint
-  // callback is set here for the estimate to count the copies it takes; the real one comes below.)
-  if (args.checkpoint || args.resume) options.on_checkpoint = [](const RenderProgress&) {};
+  if (args.checkpoint || args.resume) {  // (long renders are uniform-sampler renders: checked above)
+    options.checkpoint_seconds = args.checkpoint_every;
+    options.on_checkpoint = [&](const RenderProgress& state) {
+      RenderCheckpoint checkpoint = header;
+      checkpoint.progress = state;
+      try {
+        write_checkpoint(checkpoint_path, checkpoint);
+      } catch (const InputError& e) {  // the render goes on; the next checkpoint may succeed
+        fmt::print(stderr, "\nwarning: checkpoint not written: {}\n", e.what());
+      }
+    };
+  }
+  // Before the accelerator or the image is allocated: refuse what cannot fit (the estimate counts
+  // the copies that checkpoints take).
   check_memory(estimate_render_memory(scene, options), scene.primitive_count(), args.max_memory);
 
   SceneAccelOptions structure = args.structure.options;
@@ -351,18 +362,6 @@ int run(const RenderArgs& given) {
       if (!args.quiet)
         fmt::print(stderr, "{}pass {}/{}: wrote {}\n", interactive ? "\n" : "", done, options.passes, args.output);
     };
-    if (args.checkpoint || args.resume) {
-      options.checkpoint_seconds = args.checkpoint_every;
-      options.on_checkpoint = [&](const RenderProgress& state) {
-        RenderCheckpoint checkpoint = header;
-        checkpoint.progress = state;
-        try {
-          write_checkpoint(checkpoint_path, checkpoint);
-        } catch (const InputError& e) {  // the render goes on; the next checkpoint may succeed
-          fmt::print(stderr, "\nwarning: checkpoint not written: {}\n", e.what());
-        }
-      };
-    }
   }
   // From here the first signal lets the tiles under way finish, then the partial image and a
   // checkpoint are written; the adaptive samplers cannot stop part-way, so a signal ends them.

@@ -5,22 +5,20 @@
 #include <string>
 
 #include "raylab/core/error.h"
+#include "render_workers.h"
 
 namespace raylab {
 namespace {
 
-int tiles_across(int pixels, int tile_size) { return (pixels + tile_size - 1) / tile_size; }
-
-// The rectangle tile `t` and its margin cover, clipped to the image (tiles as TileGrid numbers
-// them: row-major from the top-left).
+// The rectangle tile `t` (numbered as TileGrid numbers the render's tiles) and its margin cover,
+// clipped to the image.
 TileSums tile_area(int t, int width, int height, int tile_size, int margin) {
-  const int across = tiles_across(width, tile_size);
-  const int x0 = (t % across) * tile_size, y0 = (t / across) * tile_size;
+  const detail::PixelRect r = detail::TileGrid(width, height, tile_size).rect(t);
   TileSums s;
-  s.x0 = std::max(0, x0 - margin);
-  s.y0 = std::max(0, y0 - margin);
-  s.x1 = std::min(width, x0 + tile_size + margin);
-  s.y1 = std::min(height, y0 + tile_size + margin);
+  s.x0 = std::max(0, r.x0 - margin);
+  s.y0 = std::max(0, r.y0 - margin);
+  s.x1 = std::min(width, r.x1 + margin);
+  s.y1 = std::min(height, r.y1 + margin);
   return s;
 }
 
@@ -42,7 +40,9 @@ std::size_t RenderProgress::memory_bytes() const {
 }
 
 std::int64_t progress_tile_count(int width, int height, int tile_size) {
-  return std::int64_t(tiles_across(width, tile_size)) * tiles_across(height, tile_size);
+  // As TileGrid::count, without its int product (a damaged checkpoint may claim 2^30 tiles).
+  auto across = [&](int pixels) { return std::int64_t(pixels + tile_size - 1) / tile_size; };
+  return across(width) * across(height);
 }
 
 std::size_t progress_pixels(int width, int height, int tile_size, int margin) {
@@ -78,7 +78,7 @@ RenderProgress start_progress(int width, int height, int tile_size, int spp, int
   p.spp = spp;
   p.passes = passes;
   p.margin = margin;
-  const int count = tiles_across(width, tile_size) * tiles_across(height, tile_size);
+  const int count = detail::TileGrid(width, height, tile_size).count();
   p.tile_done.assign(static_cast<std::size_t>(count), 0);
   p.tiles.reserve(static_cast<std::size_t>(count));
   for (int t = 0; t < count; ++t) {
