@@ -372,7 +372,12 @@ class SceneReader {
     const std::string reference = n.string("file");
     const std::string path = resolve_scene_path(m_base_dir, reference, m_options.allow_outside_paths);
     if (path.empty()) n.fail_at("file", outside_message(reference));
-    return load_mesh(path, m_options);
+    try {
+      return load_mesh(path, m_options);
+    } catch (const UsageError& e) {
+      // An extension no loader reads is a mistake in this file, at this reference.
+      n.fail_at("file", e.what());
+    }
   }
 
   std::optional<std::uint32_t> material_of(const Node& o, bool required) {

@@ -202,6 +202,11 @@ TEST(SceneJson, MistakesAreReportedWithLineColumnAndValidChoices) {
       {"[1, 2]", "s.json:1:1:", "must be an object"},
       {"", "s.json:1:1:", "JSON"},
       {"{\"version\": 1, \"objects\": []}", "s.json:1:16:", "no primitives"},
+      // A mesh file whose extension no loader reads (once an uncaught UsageError, found by the fuzzer).
+      {"{\"version\": 1, \"meshes\": {\"t\": {\"file\": \"t.~obj\"}}, \"objects\": []}",
+       "s.json:1:33:", "unsupported format '.~obj'"},
+      {"{\"version\": 1, \"objects\": [{\"type\": \"mesh\", \"file\": \"t.xyz\"}]}",
+       "s.json:1:45:", "unsupported format '.xyz'"},
   };
   for (const BadScene& c : cases) {
     SCOPED_TRACE(c.text);
