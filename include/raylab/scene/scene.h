@@ -10,6 +10,7 @@
 #include "raylab/geometry/geometry.h"
 #include "raylab/geometry/instance.h"
 #include "raylab/geometry/shading.h"
+#include "raylab/scene/camera_path.h"
 #include "raylab/scene/camera_spec.h"
 #include "raylab/scene/light.h"
 #include "raylab/scene/material.h"
@@ -36,7 +37,10 @@ struct Scene {
   std::vector<SceneObject> objects;
   std::vector<Material> materials;
   std::vector<Light> lights;
+  /// The camera of a still image (and of a scene file's `camera` object, path or not).
   CameraSpec camera;
+  /// The camera of an animation, frame by frame; empty when the scene is a still.
+  CameraPath camera_path;
   /// True when the camera came from the source itself (a scene file, or a glTF camera), false
   /// when it is a default that a loader may replace by one fitted to the scene's bounds.
   bool camera_from_file = false;
