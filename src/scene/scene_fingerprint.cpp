@@ -86,6 +86,27 @@ void hash_light(Hasher& h, const Light& l) {
   h.number(l.samples);
 }
 
+void hash_camera(Hasher& h, const CameraSpec& c) {
+  for (Vec3 v : {c.from, c.at, c.up}) h.vec(v);
+  h.number(c.vfov_degrees);
+  h.number(static_cast<int>(c.fov_span));
+  h.number(c.hither);
+}
+
+// Nothing for a still, so that the fingerprints of stills, and the checkpoints that hold them,
+// stay what they were before scenes had paths; a tag word first, so that a path cannot be
+// mistaken for more settings.
+void hash_camera_path(Hasher& h, const CameraPath& p) {
+  if (p.empty()) return;
+  h.word(0x43414D5041544821ull);  // "CAMPATH!"
+  h.number(static_cast<int>(p.interpolation));
+  h.number(static_cast<std::uint64_t>(p.keys.size()));
+  for (const CameraKey& k : p.keys) {
+    h.number(k.frame);
+    hash_camera(h, k.camera);
+  }
+}
+
 void hash_settings(Hasher& h, const RenderSettings& s) {
   for (int i : {s.width, s.height, s.spp, s.aa_depth, s.max_depth}) h.number(i);
   h.text(s.sampler);
@@ -124,13 +145,10 @@ std::uint64_t scene_fingerprint(const Scene& scene) {
   for (const Material& m : scene.materials) hash_material(h, m);
   h.number(static_cast<std::uint64_t>(scene.lights.size()));
   for (const Light& l : scene.lights) hash_light(h, l);
-  const CameraSpec& c = scene.camera;
-  for (Vec3 v : {c.from, c.at, c.up}) h.vec(v);
-  h.number(c.vfov_degrees);
-  h.number(static_cast<int>(c.fov_span));
-  h.number(c.hither);
+  hash_camera(h, scene.camera);
   h.number(scene.camera_from_file);
   hash_settings(h, scene.settings);
+  hash_camera_path(h, scene.camera_path);
   return h.value();
 }
 

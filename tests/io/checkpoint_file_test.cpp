@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -164,6 +165,30 @@ TEST(SceneFingerprint, EqualScenesAgreeAndEveryChangeShows) {
   changed[5].settings.seed = 7;
   changed[6].objects.push_back({"extra", 0});
   for (std::size_t i = 0; i < changed.size(); ++i) EXPECT_NE(scene_fingerprint(changed[i]), f) << "change " << i;
+}
+
+TEST(SceneFingerprint, EveryChangeOfTheCameraPathShows) {
+  Scene base = make_demo_scene();
+  const std::uint64_t still = scene_fingerprint(base);
+  base.camera_path.keys = {{0, base.camera}, {24, base.camera}};
+  base.camera_path.keys[1].camera.from.x += 1.f;
+  const std::uint64_t f = scene_fingerprint(base);
+  EXPECT_NE(f, still);
+
+  std::vector<Scene> changed(9, base);
+  changed[0].camera_path.interpolation = CameraPath::Interpolation::kSmooth;
+  changed[1].camera_path.keys[1].frame = 25;
+  changed[2].camera_path.keys[1].camera.from.x += 0.5f;
+  changed[3].camera_path.keys[1].camera.at.y = 0.25f;
+  changed[4].camera_path.keys[1].camera.up.z = 0.5f;
+  changed[5].camera_path.keys[1].camera.vfov_degrees += 1.f;
+  changed[6].camera_path.keys[1].camera.hither = 0.125f;
+  changed[7].camera_path.keys[1].camera.fov_span = CameraSpec::FovSpan::kPixelCentres;
+  changed[8].camera_path.keys.pop_back();
+  std::set<std::uint64_t> seen{f, still};
+  for (std::size_t i = 0; i < changed.size(); ++i) {
+    EXPECT_TRUE(seen.insert(scene_fingerprint(changed[i])).second) << "change " << i;
+  }
 }
 
 }  // namespace
