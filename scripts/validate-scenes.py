@@ -29,6 +29,9 @@ def main() -> int:
         {"version": 2, "objects": []},
         {"version": 1, "objects": [{"type": "sphere", "material": "m", "center": [0, 0], "radius": 1}]},
         {"version": 1, "objects": [{"type": "spd", "generator": "ballz"}]},
+        {"version": 1, "camera": {"from": [0, 0, 5], "at": [0, 0, 0], "path": {"keys": []}}, "objects": []},
+        {"version": 1, "camera": {"from": [0, 0, 5], "at": [0, 0, 0], "path": {"keys": [{"from": [1, 0, 5]}]}},
+         "objects": []},
     ]
     for scene in wrong:
         if validator.is_valid(scene):

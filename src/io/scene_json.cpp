@@ -16,6 +16,7 @@
 #include "raylab/scene/mesh_builder.h"
 #include "raylab/scene/scene_merge.h"
 #include "raylab/scene/spd.h"
+#include "scene_json_camera.h"
 #include "scene_json_node.h"
 
 namespace raylab {
@@ -25,6 +26,7 @@ using nlohmann::json;
 using scene_json_detail::kPositive;
 using scene_json_detail::kRequired;
 using scene_json_detail::Node;
+using scene_json_detail::read_camera;
 using scene_json_detail::type_name;
 
 class SceneReader {
@@ -53,7 +55,7 @@ class SceneReader {
     if (m_scene.primitive_count() == 0) root.fail_at("objects", "the scene has no primitives");
     const bool has_camera = root.has("camera");
     const bool has_lights = root.has("lights");
-    if (has_camera) read_camera(root.child("camera", "'camera'"));
+    if (has_camera) read_camera(root.child("camera", "'camera'"), m_scene.camera, m_scene.camera_path);
     // Lights and camera of an SPD generator serve when the file gives none; otherwise the
     // camera is fitted to the scene's bounds, as for a bare mesh.
     if (!has_lights && m_borrowed) m_scene.lights = m_borrowed->lights;
@@ -93,23 +95,6 @@ class SceneReader {
     s.ambient = n.color("ambient", s.ambient);
     s.sky_gradient = n.boolean("sky_gradient", s.sky_gradient);
     s.horizon = n.color("horizon", s.horizon);
-  }
-
-  void read_camera(const Node& n) {
-    n.check_keys({"from", "at", "up", "fov", "fov_span", "hither"});
-    CameraSpec& c = m_scene.camera;
-    c.from = n.vec3("from");
-    c.at = n.vec3("at");
-    c.up = n.vec3("up", Vec3{0.f, 1.f, 0.f});
-    c.vfov_degrees = n.real("fov", 45.0, kPositive, 179.0);
-    c.fov_span = n.choice("fov_span", {"edges", "pixel-centres"}, "edges") == "edges"
-                     ? CameraSpec::FovSpan::kImageEdges
-                     : CameraSpec::FovSpan::kPixelCentres;
-    c.hither = n.real("hither", 0.0, 0.0);
-    const Vec3 forward = c.at - c.from;
-    if (!(dot(forward, forward) > 0.f)) n.fail("camera 'from' and 'at' are the same point");
-    const Vec3 side = cross(forward, c.up);
-    if (!(dot(side, side) > 0.f)) n.fail_at("up", "camera 'up' is parallel to the viewing direction (or zero)");
   }
 
   void read_materials(const Node& n) {

@@ -14,6 +14,7 @@
 #include "raylab/io/scene_json.h"
 #include "raylab/io/scene_loader.h"
 #include "raylab/render/renderer.h"
+#include "raylab/scene/camera_path.h"
 #include "raylab/scene/scene_merge.h"
 #include "raylab/scene/spd.h"
 
@@ -211,6 +212,95 @@ TEST(SceneJson, MistakesAreReportedWithLineColumnAndValidChoices) {
   for (const BadScene& c : cases) {
     SCOPED_TRACE(c.text);
     const std::string message = error_of(c.text);
+    EXPECT_TRUE(message.starts_with(c.position)) << message;
+    EXPECT_NE(message.find(c.words), std::string::npos) << message;
+  }
+}
+
+// A scene whose camera (text from line 3 on) is `camera`.
+std::string with_camera(const std::string& camera) {
+  return "{\"version\": 1, \"materials\": {\"m\": {}}, \"lights\": [{\"type\": \"point\", \"position\": [0, 9, "
+         "0]}],\n\"objects\": [{\"type\": \"sphere\", \"material\": \"m\", \"center\": [0, 0, 0], \"radius\": "
+         "1}],\n\"camera\": " +
+         camera + "}";
+}
+
+TEST(SceneJson, CameraPathIsReadWithFieldsFromTheCameraObject) {
+  const Scene s = parse_scene_json(with_camera(R"({"from": [1, 2, 3], "at": [0, 1, 0], "up": [0, 0, 1], "fov": 30,
+    "fov_span": "pixel-centres", "hither": 0.5,
+    "path": {"interpolation": "smooth", "keys": [
+      {"frame": 0},
+      {"frame": 24, "from": [10, 2, 0], "fov": 20},
+      {"frame": 48, "at": [0, 1, 1], "up": [0, 1, 0], "hither": 0.25}]}})"),
+                                   "s.json", ".");
+  // The still camera is the camera object's own.
+  EXPECT_EQ(s.camera.from, Vec3(1.f, 2.f, 3.f));
+  EXPECT_EQ(s.camera.at, Vec3(0.f, 1.f, 0.f));
+  EXPECT_FLOAT_EQ(s.camera.vfov_degrees, 30.f);
+  const CameraPath& p = s.camera_path;
+  EXPECT_EQ(p.interpolation, CameraPath::Interpolation::kSmooth);
+  ASSERT_EQ(p.keys.size(), 3u);
+  EXPECT_EQ(p.keys[0].frame, 0);
+  EXPECT_EQ(p.keys[1].frame, 24);
+  EXPECT_EQ(p.keys[2].frame, 48);
+  // Key 0 gives nothing: the camera object's values.
+  EXPECT_EQ(p.keys[0].camera.from, s.camera.from);
+  EXPECT_EQ(p.keys[0].camera.up, s.camera.up);
+  EXPECT_FLOAT_EQ(p.keys[0].camera.hither, 0.5f);
+  // Key 1: its own from and fov, the rest inherited.
+  EXPECT_EQ(p.keys[1].camera.from, Vec3(10.f, 2.f, 0.f));
+  EXPECT_EQ(p.keys[1].camera.at, s.camera.at);
+  EXPECT_EQ(p.keys[1].camera.up, s.camera.up);
+  EXPECT_FLOAT_EQ(p.keys[1].camera.vfov_degrees, 20.f);
+  EXPECT_FLOAT_EQ(p.keys[1].camera.hither, 0.5f);
+  // Key 2 inherits from the camera object, not from key 1.
+  EXPECT_EQ(p.keys[2].camera.from, s.camera.from);
+  EXPECT_EQ(p.keys[2].camera.at, Vec3(0.f, 1.f, 1.f));
+  EXPECT_EQ(p.keys[2].camera.up, Vec3(0.f, 1.f, 0.f));
+  EXPECT_FLOAT_EQ(p.keys[2].camera.vfov_degrees, 30.f);
+  EXPECT_FLOAT_EQ(p.keys[2].camera.hither, 0.25f);
+  for (const CameraKey& k : p.keys) EXPECT_EQ(k.camera.fov_span, CameraSpec::FovSpan::kPixelCentres);
+
+  const Scene linear = parse_scene_json(
+      with_camera(R"({"from": [1, 2, 3], "at": [0, 1, 0], "path": {"keys": [{"frame": 5}]}})"), "s.json", ".");
+  EXPECT_EQ(linear.camera_path.interpolation, CameraPath::Interpolation::kLinear);
+  ASSERT_EQ(linear.camera_path.keys.size(), 1u);
+  const Scene still = parse_scene_json(with_camera(R"({"from": [1, 2, 3], "at": [0, 1, 0]})"), "s.json", ".");
+  EXPECT_TRUE(still.camera_path.empty());
+}
+
+TEST(SceneJson, CameraPathMistakesAreReportedAtTheirKey) {
+  // Line 3 is `"camera": {"from": [0, 0, 5], "at": [0, 0, 0], "path": {`, with 'path' at column 48.
+  const std::string camera = R"({"from": [0, 0, 5], "at": [0, 0, 0], "path": {)";
+  const struct {
+    std::string path;  // the rest of the path object, from line 4 on
+    const char* position;
+    const char* words;
+  } cases[] = {
+      {"\n \"keys\": [{\"frame\": 10},\n {\"frame\": 10, \"from\": [1, 0, 5]}]}}",
+       "s.json:5:3:", "'frame' is 10, must be greater than the previous key's (10): keys go in increasing frame order"},
+      {"\n \"keys\": [{\"frame\": 0},\n {\"frame\": 20, \"fov_span\": \"edges\"}]}}",
+       "s.json:5:16:", "unknown key 'fov_span' in camera path key 1 (valid: frame, from, at, up, fov, hither)"},
+      {"\n \"interpolation\": \"cubic\",\n \"keys\": [{\"frame\": 0}]}}",
+       "s.json:4:2:", "'interpolation' is 'cubic' (valid: linear, smooth)"},
+      {"\n \"keys\": [{\"frame\": 0},\n {\"frame\": 10, \"from\": [0, 0, 0]}]}}",
+       "s.json:5:2:", "camera path key 1 (frame 10): 'from' and 'at' are the same point"},
+      {"\n \"keys\": [{\"frame\": 0},\n {\"frame\": 3, \"up\": [0, 0, 1]}]}}",
+       "s.json:5:15:", "camera path key 1 (frame 3): 'up' is parallel to the viewing direction"},
+      {"\n \"keys\": [{\"frame\": 0, \"from\": [-1, 0, 0]},\n {\"frame\": 10, \"from\": [1, 0, 0]}]}}",
+       "s.json:3:48:", "camera path: the camera at frame 5 has 'from' and 'at' at the same point"},
+      {"\n \"bogus\": 1, \"keys\": [{\"frame\": 0}]}}",
+       "s.json:4:2:", "unknown key 'bogus' in 'path' (valid: interpolation, keys)"},
+      {"\n \"interpolation\": \"linear\"}}", "s.json:3:48:", "the camera path needs 'keys'"},
+      {"\n \"keys\": []}}", "s.json:4:2:", "'keys' must be an array of 1 or more keys, found an array of 0"},
+      {"\n \"keys\": [\n {\"from\": [1, 0, 5]}]}}", "s.json:5:2:", "camera path key 0 needs 'frame'"},
+      {"\n \"keys\": [{\"frame\": -1}]}}", "s.json:4:12:", "'frame' is -1, must be in [0, 1000000]"},
+      {"\n \"keys\": [{\"frame\": 0.5}]}}", "s.json:4:12:", "'frame' must be an integer, found a number"},
+      {"\n \"keys\": [7]}}", "s.json:4:2:", "camera path key 0 must be an object, found an integer"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.path);
+    const std::string message = error_of(with_camera(camera + c.path));
     EXPECT_TRUE(message.starts_with(c.position)) << message;
     EXPECT_NE(message.find(c.words), std::string::npos) << message;
   }
