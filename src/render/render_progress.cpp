@@ -39,6 +39,20 @@ std::size_t RenderProgress::memory_bytes() const {
   return bytes;
 }
 
+std::vector<std::uint32_t> samples_per_pixel(const RenderProgress& progress) {
+  std::vector<std::uint32_t> samples(std::size_t(progress.width) * std::size_t(progress.height));
+  const detail::TileGrid grid(progress.width, progress.height, progress.tile_size);
+  for (int t = 0; t < grid.count(); ++t) {
+    const detail::PixelRect r = grid.rect(t);
+    const auto n = static_cast<std::uint32_t>(progress.samples_in_tile(t));
+    for (int y = r.y0; y < r.y1; ++y) {
+      std::fill_n(samples.begin() + static_cast<std::ptrdiff_t>(std::size_t(y) * progress.width + r.x0), r.x1 - r.x0,
+                  n);
+    }
+  }
+  return samples;
+}
+
 std::int64_t progress_tile_count(int width, int height, int tile_size) {
   // As TileGrid::count, without its int product (a damaged checkpoint may claim 2^30 tiles).
   auto across = [&](int pixels) { return std::int64_t(pixels + tile_size - 1) / tile_size; };

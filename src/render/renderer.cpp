@@ -15,98 +15,26 @@
 #include "raylab/sampling/filter.h"
 #include "raylab/sampling/pixel_sampler.h"
 #include "render_workers.h"
+#include "tile_samples.h"
 
 namespace raylab {
 namespace {
 
+using detail::check_resumable;
+using detail::filter_margin;
+using detail::is_pixel_box;
 using detail::PixelRect;
+using detail::render_tile_samples;
 using detail::RenderWorkers;
 using detail::TileGrid;
-
-// The box filter of half-width 0.5 is the plain per-pixel average: no sample leaves its pixel.
-bool is_pixel_box(const Filter& f) { return f.kind() == FilterKind::kBox && f.radius() == 0.5f; }
-
-// Adds sample colour `c`, taken at image position (x, y), to the pixels of `sums` whose centre
-// lies strictly within the filter's radius of it, weighted by the filter.
-void add_filtered(TileSums& sums, const Filter& filter, float x, float y, Color c) {
-  const float r = filter.radius();
-  // Pixels whose centre lies strictly within the radius: |px + 0.5 - x| < r.
-  const int px0 = std::max(sums.x0, static_cast<int>(std::floor(x - 0.5f - r)) + 1);
-  const int px1 = std::min(sums.x1 - 1, static_cast<int>(std::ceil(x - 0.5f + r)) - 1);
-  const int py0 = std::max(sums.y0, static_cast<int>(std::floor(y - 0.5f - r)) + 1);
-  const int py1 = std::min(sums.y1 - 1, static_cast<int>(std::ceil(y - 0.5f + r)) - 1);
-  for (int py = py0; py <= py1; ++py) {
-    const float wy = filter.evaluate_1d(static_cast<float>(py) + 0.5f - y);
-    if (wy == 0.f) continue;
-    for (int px = px0; px <= px1; ++px) {
-      const float w = wy * filter.evaluate_1d(static_cast<float>(px) + 0.5f - x);
-      const std::size_t i = sums.index(px, py);
-      sums.sum[i] += c * w;
-      sums.weight[i] += w;
-    }
-  }
-}
-
-// Throws UsageError unless `p`, a state to go on from, was made for this image, tiling, sample
-// count and filter reach.
-void check_resumable(const RenderProgress& p, int width, int height, int tile_size, int spp, int margin) {
-  if (p.width == width && p.height == height && p.tile_size == tile_size && p.spp == spp && p.margin == margin &&
-      p.passes >= 1 && static_cast<int>(p.tiles.size()) == static_cast<int>(p.tile_done.size())) {
-    return;
-  }
-  throw UsageError("the saved render state is for a " + std::to_string(p.width) + "x" + std::to_string(p.height) +
-                   " image in tiles of " + std::to_string(p.tile_size) + " at " + std::to_string(p.spp) +
-                   " spp (filter margin " + std::to_string(p.margin) + "), not for this " + std::to_string(width) +
-                   "x" + std::to_string(height) + " render in tiles of " + std::to_string(tile_size) + " at " +
-                   std::to_string(spp) + " spp (filter margin " + std::to_string(margin) + ")");
-}
-
-// Samples [first, end) of every pixel of tile `rect` added to `sums` (which covers the tile and
-// its margin), in the order of a render in one go: pixels row-major, each pixel's samples in order.
-void render_tile_samples(const TraceContext& ctx, const Camera& camera, const PixelSampler& sampler,
-                         const Filter& filter, bool pixel_box, bool packets, const PixelRect& rect, int first, int end,
-                         TileSums& sums) {
-  // Sample i of pixel (px, py) has colour colour_of(i, x, y), at image position (x, y).
-  auto add_pixel = [&](int px, int py, auto&& colour_of) {
-    Color* own = pixel_box ? &sums.sum[sums.index(px, py)] : nullptr;
-    for (int i = first; i < end; ++i) {
-      // Every random choice of this sample comes from (pixel, index, seed): no shared state.
-      const Sample2 u = sampler.sample(px, py, i);
-      const float x = static_cast<float>(px) + u.x;
-      const float y = static_cast<float>(py) + u.y;
-      const Color c = colour_of(i, x, y);
-      if (own) {
-        *own += c;  // the box filter over the pixel: a plain sum, divided by the count at the end
-      } else {
-        add_filtered(sums, filter, x, y, c);
-      }
-    }
-  };
-  if (packets) {
-    // The same samples, seeds and sums in the same order; only the tracing is grouped.
-    detail::TilePacketTracer tracer(ctx, camera, sampler, first, end);
-    tracer.for_each_pixel(rect, [&](int px, int py, std::span<const Color> colours) {
-      add_pixel(px, py, [&](int i, float, float) { return colours[static_cast<std::size_t>(i - first)]; });
-    });
-    return;
-  }
-  for (int py = rect.y0; py < rect.y1; ++py) {
-    for (int px = rect.x0; px < rect.x1; ++px) {
-      add_pixel(px, py, [&](int i, float x, float y) {
-        return detail::trace_image_position(ctx, camera, x, y, sample_path_seed(sampler.seed(), px, py, i));
-      });
-    }
-  }
-}
 
 RenderResult render_uniform(const Scene& scene, const Accelerator& accel, Film& film, const RenderOptions& options,
                             const PixelSampler& sampler, const Filter& filter) {
   const Camera camera(scene.camera, film.width(), film.height());
   const TileGrid grid(film.width(), film.height(), options.tile_size);
-  const bool pixel_box = is_pixel_box(filter);
   // Wider filters: each tile accumulates into its own sums (tile plus margin), added up in tile
   // order by develop(), so the image does not depend on scheduling.
-  const int margin = pixel_box ? 0 : static_cast<int>(std::ceil(filter.radius() - 0.5f));
+  const int margin = filter_margin(filter);
   RenderProgress own;
   RenderProgress& progress = options.progress != nullptr ? *options.progress : own;
   if (progress.tiles.empty()) {
@@ -151,7 +79,7 @@ RenderResult render_uniform(const Scene& scene, const Accelerator& accel, Film& 
       // Only this task changes tile t during this pass, so it works on a copy and commits it whole:
       // a checkpoint taken meanwhile sees the tile as it was after the previous pass.
       TileSums sums = progress.tiles[static_cast<std::size_t>(t)];
-      render_tile_samples(ctx, camera, sampler, filter, pixel_box, options.packets, grid.rect(t), first, end, sums);
+      render_tile_samples(ctx, camera, sampler, filter, options.packets, grid.rect(t), first, end, sums);
       {
         const std::lock_guard lock(state_mutex);
         progress.tiles[static_cast<std::size_t>(t)] = std::move(sums);
@@ -174,15 +102,7 @@ RenderResult render_uniform(const Scene& scene, const Accelerator& accel, Film& 
   }
   develop(progress, film);
 
-  std::vector<std::uint32_t> samples(std::size_t(film.width()) * film.height());
-  for (int t = 0; t < grid.count(); ++t) {
-    const PixelRect r = grid.rect(t);
-    const auto n = static_cast<std::uint32_t>(progress.samples_in_tile(t));
-    for (int y = r.y0; y < r.y1; ++y) {
-      std::fill_n(samples.begin() + static_cast<std::ptrdiff_t>(std::size_t(y) * film.width() + r.x0), r.x1 - r.x0, n);
-    }
-  }
-  RenderResult result = detail::finish_render(workers, start, std::move(samples));
+  RenderResult result = detail::finish_render(workers, start, samples_per_pixel(progress));
   result.interrupted = !progress.complete();
   return result;
 }
@@ -236,7 +156,7 @@ RenderMemoryEstimate estimate_render_memory(const Scene& scene, const RenderOpti
     e.sums = pixels * 2 * sizeof(Color);  // its per-pixel sample records, about the film's size twice
   } else {
     const Filter filter = make_filter(s.filter, s.filter_radius);
-    const int margin = is_pixel_box(filter) ? 0 : static_cast<int>(std::ceil(filter.radius() - 0.5f));
+    const int margin = filter_margin(filter);
     e.sums = progress_memory_bytes(s.width, s.height, std::max(1, options.tile_size), margin);
     // A checkpoint copies the state, and its file's bytes are about the same size again.
     if (options.on_checkpoint) e.sums *= 3;

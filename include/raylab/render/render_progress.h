@@ -70,6 +70,10 @@ std::int64_t progress_tile_count(int width, int height, int tile_size);
 /// number of sums start_progress keeps.
 std::size_t progress_pixels(int width, int height, int tile_size, int margin);
 
+/// Samples each pixel holds now (row-major, width x height): what render() reports as
+/// RenderResult::samples_per_pixel.
+std::vector<std::uint32_t> samples_per_pixel(const RenderProgress& progress);
+
 /// Develops the image of the samples so far into `film` (which must be `progress`'s size): with
 /// the pixel box, each pixel's sum over its tile's sample count; with wider filters, the tiles'
 /// sums and weights added up in tile order, then divided. Pixels no sample has reached are black.
