@@ -11,6 +11,7 @@ packages=(
   libstb-dev libopenexr-dev
   libtinyobjloader-dev libtinygltf-dev
   libembree-dev
+  libopenmpi-dev openmpi-bin   # distributed rendering (src/dist/) and its mpirun tests
   clang-format
   clang                # libFuzzer targets (make fuzz)
   python3-jsonschema   # the test that validates shipped scenes against scenes/scene.schema.json
