@@ -330,6 +330,7 @@ class SceneReader {
         o.check_keys({"type", "name", "material", "generator", "size", "transform"});
         std::string source = "spd:" + o.string("generator");
         if (o.has("size")) source += "?size=" + std::to_string(o.integer("size", 1, 1, 1 << 20));
+        check_spd_size(o);
         Scene spd = make_spd_scene(source);
         append_scene(m_scene, spd, read_transform(o), material_of(o, false));
         if (!m_borrowed) m_borrowed = std::move(spd);
@@ -337,6 +338,20 @@ class SceneReader {
     } catch (const UsageError& e) {
       // Generator names and transforms that cannot apply are errors in the file, at this object.
       o.fail(e.what());
+    }
+  }
+
+  // Refuses an SPD object larger than LoadOptions::max_spd_size allows.
+  void check_spd_size(const Node& o) const {
+    if (m_options.max_spd_size <= 0) return;
+    const std::string name = o.string("generator");
+    for (const SpdGenerator& g : spd_generators()) {
+      if (g.name != name) continue;
+      const auto size = o.has("size") ? o.integer("size", 1, 1, 1 << 20) : g.default_size;
+      if (size > m_options.max_spd_size) {
+        o.fail("SPD size " + std::to_string(size) + " is over this reader's limit of " +
+               std::to_string(m_options.max_spd_size));
+      }
     }
   }
 

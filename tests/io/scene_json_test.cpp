@@ -341,3 +341,25 @@ TEST(SceneJson, PathsLeavingTheSceneFolderAreRefusedUnlessAllowed) {
 
 }  // namespace
 }  // namespace raylab
+
+namespace raylab {
+namespace {
+
+TEST(SceneJson, SpdSizesOverTheCallersLimitAreRefusedAtTheObject) {
+  LoadOptions capped;
+  capped.max_spd_size = 3;
+  // Size 7 (5 million spheres) is refused before any is made; so is a default size over the cap.
+  const std::string big = R"({"version": 1, "objects": [{"type": "spd", "generator": "balls", "size": 7}]})";
+  const std::string message = error_of(big, ".", capped);
+  EXPECT_TRUE(message.starts_with("s.json:1:28:")) << message;
+  EXPECT_NE(message.find("SPD size 7 is over this reader's limit of 3"), std::string::npos) << message;
+  const std::string by_default = R"({"version": 1, "objects": [{"type": "spd", "generator": "balls"}]})";
+  EXPECT_NE(error_of(by_default, ".", capped).find("SPD size 4"), std::string::npos);
+  // Within the cap, and without one, the same objects load.
+  EXPECT_EQ(error_of(R"({"version": 1, "objects": [{"type": "spd", "generator": "balls", "size": 2}]})", ".", capped),
+            "");
+  EXPECT_EQ(error_of(by_default), "");
+}
+
+}  // namespace
+}  // namespace raylab

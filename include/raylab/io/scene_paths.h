@@ -11,6 +11,11 @@ struct LoadOptions {
   /// Allow references (meshes, textures, glTF buffers) that leave the folder of the file that
   /// names them. Off by default: a scene file from elsewhere must not read arbitrary files.
   bool allow_outside_paths = false;
+  /// When positive, the largest size an SPD generator object in a scene file may ask for (its
+  /// default size counts when it gives none); 0: each generator's own limit. For callers that
+  /// must bound the work an untrusted file can ask for (the fuzzer: sphereflakes grow 9-fold per
+  /// size step).
+  int max_spd_size = 0;
 };
 
 /// Resolves `reference` (relative to `base_dir`, or absolute) to a path. Returns an empty string
