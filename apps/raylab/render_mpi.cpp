@@ -118,6 +118,10 @@ int run_under_mpi(const RenderArgs& given) {
     const int signal = interrupt_signal();
     return signal != 0 ? interrupt_exit_status(signal) : 1;
   }
+  if (result.outcome != dist::DistributedOutcome::kComplete) {
+    // Saved once already as the run ended; again now that rank 0's own last tiles are in.
+    options.render.on_checkpoint(setup.progress);
+  }
   if (result.outcome == dist::DistributedOutcome::kFailed) {
     if (bar) bar->finish("failed");
     fmt::print(stderr,
