@@ -4,6 +4,7 @@
 #include "coordinator.h"
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
@@ -24,7 +25,9 @@ namespace {
 // What rank 0 knows of another rank.
 struct Peer {
   bool greeted = false;   // its hello arrived and agreed
-  int credits = 0;        // jobs it can take now (its threads plus one, less those it holds)
+  int threads = 0;           // its render threads
+  int held = 0;              // jobs sent and not yet back
+  double job_seconds = 0;    // a running mean of the time its jobs take (0 until one is back)
   bool reported = false;  // its report arrived
   bool stopping = false;  // it said it stops (a signal, or answering rank 0's abort)
   RankReport report;
@@ -205,7 +208,7 @@ class Coordinator final : public TileJobSource {
                              "same scene file with the same options");
           } else {
             peer.greeted = true;
-            peer.credits = std::max(1, hello.threads) + 1;
+            peer.threads = std::max(1, hello.threads);
             peer.report.host = hello.host;
           }
           break;
@@ -213,13 +216,14 @@ class Coordinator final : public TileJobSource {
         case protocol::kResult: {
           double seconds = 0;
           TileJob job = protocol::decode_job(m.bytes, &seconds);
+          peer.job_seconds = peer.job_seconds == 0 ? seconds : 0.8 * peer.job_seconds + 0.2 * seconds;
           int done_now = 0;
           {
             const std::lock_guard lock(m_mutex);
             done_now = commit(m.from, std::move(job));
           }
           if (done_now > 0) {
-            ++peer.credits;
+            --peer.held;
             if (m_options.render.on_progress) m_options.render.on_progress(done_now, m_tiles_total);
           }
           break;
@@ -247,17 +251,27 @@ class Coordinator final : public TileJobSource {
   void hand_out() {
     for (int r = 1; r < m_channel.size(); ++r) {
       Peer& p = m_peers[static_cast<std::size_t>(r)];
-      while (p.greeted && p.credits > 0) {
+      while (p.greeted && p.held < jobs_to_hold(p)) {
         TileJob job;
         {
           const std::lock_guard lock(m_mutex);
           if (m_pending.empty() || m_stopping) return;
           job = take_job(r);
         }
-        --p.credits;
+        ++p.held;
         m_channel.send(r, protocol::kJob, protocol::encode(job));
       }
     }
+  }
+
+  // How many jobs rank `p` should hold: enough per thread that its threads never wait for the
+  // next job while a result travels to rank 0 and a job back (kLatencySeconds), plus one; no
+  // more, so that the last jobs of a pass are not stuck behind a long queue on one rank.
+  static int jobs_to_hold(const Peer& p) {
+    constexpr double kLatencySeconds = 0.005;
+    const int per_thread =
+        p.job_seconds > 0 ? static_cast<int>(std::clamp(std::ceil(kLatencySeconds / p.job_seconds), 1.0, 32.0)) : 2;
+    return p.threads * per_thread + 1;
   }
 
   // When every tile has finished the pass under way: the next pass, or the end.

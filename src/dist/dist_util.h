@@ -15,6 +15,9 @@ inline double seconds_since(Clock::time_point t) { return std::chrono::duration<
 /// Longest wait for a message before a message loop looks around again (signals, timeouts).
 inline constexpr double kPollSeconds = 0.02;
 
+/// A worker's wait for a message before it looks for finished jobs to send back.
+inline constexpr double kWorkerPollSeconds = 0.001;
+
 /// A worker with nothing else to say says it is alive this often, so that only a dead or hung
 /// process stays silent for long.
 inline constexpr double kHeartbeatSeconds = 1.0;

@@ -49,7 +49,7 @@ class MpiChannel final : public Channel {
       if (std::chrono::duration<double>(Clock::now() - start).count() >= seconds) return std::nullopt;
       // Polling with short sleeps, not a blocking receive: MPI's blocking calls spin, and a
       // spinning message loop would take a core from the render threads.
-      std::this_thread::sleep_for(std::chrono::microseconds(200));
+      std::this_thread::sleep_for(std::chrono::microseconds(1000));
     }
   }
 

@@ -2,7 +2,8 @@
 // Internal to the dist module: the messages of a distributed render and their bytes.
 //
 //   worker -> 0: kHello (agreement, threads, host) once at the start;
-//   0 -> worker: kJob, as many as the worker has threads plus one, then one per kResult;
+//   0 -> worker: kJob, enough to keep the worker's threads busy while messages travel (see
+//                Coordinator::jobs_to_hold), topped up as kResults come back;
 //   worker -> 0: kResult per finished job; kHeartbeat every second; kReport when told kStop;
 //                kFailed with the error if something throws; kInterrupted on a signal;
 //   0 -> worker: kStop when every tile is in, kAbort when the run ends early.

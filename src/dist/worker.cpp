@@ -50,7 +50,9 @@ DistributedResult serve(Channel& channel, TileRenderer& renderer, const Distribu
     }
     send_finished();
     if (seconds_since(last_sent) >= kHeartbeatSeconds) send(protocol::kHeartbeat, {});
-    std::optional<Message> m = channel.receive(kPollSeconds);
+    // A short wait: finished jobs go out at the top of the loop, and a thread may be waiting
+    // for the job that this result brings.
+    std::optional<Message> m = channel.receive(kWorkerPollSeconds);
     if (!m) {
       if (seconds_since(heard_from_root) > options.rank_timeout_seconds) {
         // Rank 0 sends a heartbeat every second: it has died, and no launcher ended this rank.
