@@ -4,8 +4,8 @@
 #include "coordinator.h"
 
 #include <algorithm>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <cstdio>
 #include <deque>
@@ -24,12 +24,12 @@ namespace {
 
 // What rank 0 knows of another rank.
 struct Peer {
-  bool greeted = false;   // its hello arrived and agreed
-  int threads = 0;           // its render threads
-  int held = 0;              // jobs sent and not yet back
-  double job_seconds = 0;    // a running mean of the time its jobs take (0 until one is back)
-  bool reported = false;  // its report arrived
-  bool stopping = false;  // it said it stops (a signal, or answering rank 0's abort)
+  bool greeted = false;    // its hello arrived and agreed
+  int threads = 0;         // its render threads
+  int held = 0;            // jobs sent and not yet back
+  double job_seconds = 0;  // a running mean of the time its jobs take (0 until one is back)
+  bool reported = false;   // its report arrived
+  bool stopping = false;   // it said it stops (a signal, or answering rank 0's abort)
   RankReport report;
   Clock::time_point last_heard;
 };
