@@ -95,6 +95,7 @@ int run_frames(const RenderArgs& given) {
   dist::FramesOptions options;
   for (int f = first; f <= last; ++f) options.frames.push_back(f);
   options.agreement = render_agreement(setup);
+  options.threads = render_thread_count(render_options(setup));
   options.rank_timeout_seconds = args.rank_timeout;
   options.host = session ? session->host() : "local";
   options.should_stop = [] { return interrupt_signal() != 0; };

@@ -275,6 +275,7 @@ FramesResult coordinate_frames(Channel& channel, const FramesOptions& options) {
   RankReport mine;
   mine.rank = 0;
   mine.host = options.host;
+  mine.threads = options.threads;
   mine.jobs = own.frames;
   mine.stats = own.stats;
   mine.busy_seconds = own.busy;
@@ -289,8 +290,9 @@ FramesResult coordinate_frames(Channel& channel, const FramesOptions& options) {
 FramesResult serve_frames(Channel& channel, const FramesOptions& options) {
   const auto start = Clock::now();
   FramesResult result;
-  channel.send(0, protocol::kHello,
-               protocol::encode(protocol::Hello{options.agreement, protocol::build_signature(), 1, options.host}));
+  channel.send(
+      0, protocol::kHello,
+      protocol::encode(protocol::Hello{options.agreement, protocol::build_signature(), options.threads, options.host}));
   auto last_sent = Clock::now();
   FrameQueue queue;
   FrameThread thread(options, queue);
@@ -341,7 +343,7 @@ FramesResult serve_frames(Channel& channel, const FramesOptions& options) {
     RankReport report;
     report.rank = channel.rank();
     report.host = options.host;
-    report.threads = 1;
+    report.threads = options.threads;
     report.jobs = thread.frames;
     report.stats = thread.stats;
     report.busy_seconds = thread.busy;

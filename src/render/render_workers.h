@@ -58,10 +58,7 @@ class RenderWorkers {
  public:
   /// Workers for `scene` traced through `accel`, as many threads as `options` asks.
   RenderWorkers(const Scene& scene, const Accelerator& accel, const RenderOptions& options)
-      : m_scene(scene),
-        m_accel(accel),
-        m_count(options.count_traversal),
-        m_arena(options.threads > 0 ? options.threads : tbb::info::default_concurrency()) {}
+      : m_scene(scene), m_accel(accel), m_count(options.count_traversal), m_arena(render_thread_count(options)) {}
 
   /// Calls `fn(index, ctx)` for every index in [0, count), in parallel, one index per task.
   template <class Fn>

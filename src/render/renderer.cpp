@@ -117,6 +117,10 @@ void check_adaptive_options(const std::string& sampler, const RenderOptions& opt
 
 }  // namespace
 
+int render_thread_count(const RenderOptions& options) {
+  return options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+}
+
 std::string resolve_sampler_name(const RenderSettings& settings) {
   if (settings.sampler == "auto") return settings.spp <= 1 ? "center" : "jittered";
   return settings.sampler;

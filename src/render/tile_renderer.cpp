@@ -19,7 +19,7 @@ struct TileRenderer::State {
         filter(make_filter(scene.settings.filter, scene.settings.filter_radius)),
         grid(scene.settings.width, scene.settings.height, options.tile_size),
         workers(scene, accel, options),
-        thread_count(options.threads > 0 ? options.threads : tbb::info::default_concurrency()),
+        thread_count(render_thread_count(options)),
         packets(options.packets),
         notice(spp_rounding_notice(name, scene.settings.spp)),
         width(scene.settings.width),

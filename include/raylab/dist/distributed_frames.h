@@ -36,6 +36,7 @@ struct FramesOptions {
   std::function<bool()> should_stop;
   /// Rank 0: the message when the run ends early, as soon as it is known. May be empty.
   std::function<void(const std::string&)> on_stopping;
+  int threads = 1;                       ///< threads render_frame uses (for the report)
   std::uint64_t agreement = 0;           ///< as DistributedOptions::agreement
   double rank_timeout_seconds = 60;      ///< as DistributedOptions::rank_timeout_seconds
   double interrupt_grace_seconds = 0.5;  ///< as DistributedOptions::interrupt_grace_seconds

@@ -55,6 +55,10 @@ struct RenderOptions {
   double checkpoint_seconds = 0.0;  ///< see on_checkpoint
 };
 
+/// The worker threads a render with `options` uses: options.threads, or with 0 every core this
+/// process may run on.
+int render_thread_count(const RenderOptions& options);
+
 /// What a finished render reports.
 struct RenderResult {
   RenderStats stats;
