@@ -6,6 +6,7 @@
 
 #include "commands.h"
 #include "raylab/core/error.h"
+#include "raylab/dist/launcher.h"
 
 int main(int argc, char** argv) {
   // A write past the file-size limit (ulimit -f) then fails with EFBIG, which the atomic writer
@@ -30,7 +31,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "raylab: %s\nRun 'raylab --help' for usage.\n", e.what());
+    // Under an MPI launcher every rank parses the same arguments: one message is enough.
+    if (!raylab::dist::launched_by_mpi() || raylab::dist::launcher_rank() == 0) {
+      std::fprintf(stderr, "raylab: %s\nRun 'raylab --help' for usage.\n", e.what());
+    }
     return 2;
   }
   try {
@@ -42,7 +46,9 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("quality")) return run_quality();
     if (app.got_subcommand("bench")) return run_bench();
   } catch (const raylab::UsageError& e) {
-    std::fprintf(stderr, "raylab: %s\n", e.what());
+    if (!raylab::dist::launched_by_mpi() || raylab::dist::launcher_rank() == 0) {
+      std::fprintf(stderr, "raylab: %s\n", e.what());
+    }
     return 2;
   } catch (const raylab::InputError& e) {
     std::fprintf(stderr, "%s\n", e.what());
