@@ -3,7 +3,7 @@
 # tests/CMakeLists.txt). Usage: mpi_cli_test.sh CASE RAYLAB SOURCE_DIR MPIEXEC [PREFLAGS...]
 #   identical  the image of N = 1, 2, 3 ranks has the bytes of the single-process render
 #              (box filter; gaussian in 2 passes)
-#   killed     a worker killed mid-render: the run fails naming the rank and its tiles, writes
+#   killed     a worker killed mid-render (1 s after the first checkpoint): the run fails naming the rank and its tiles, writes
 #              no image, leaves a checkpoint that resumes (under MPI) to the same bytes
 #   disagree   a rank with other settings: refused by name before any tile, no image
 #   frames     --frames under 3 ranks: every frame has the bytes of the single-process frames
@@ -34,14 +34,18 @@ identical)
 killed)
   long=(demo --width 320 --height 200 --spp 64 -q)
   "$raylab" render "${long[@]}" -o reference.png || fail "reference render"
-  # Rank 1 is killed (SIGKILL) 1.5 s in; the render takes several seconds on 3 ranks.
+  # Rank 1 is killed (SIGKILL) 1 s after rank 0's first checkpoint (every 0.5 s), i.e. well into
+  # the render, however long the ranks took to start; the render takes several seconds more.
   cat >die.sh <<'SCRIPT'
 #!/bin/sh
-if [ "${OMPI_COMM_WORLD_RANK:-${PMI_RANK:-0}}" = "1" ]; then (sleep 1.5; kill -9 $$) & fi
+if [ "${OMPI_COMM_WORLD_RANK:-${PMI_RANK:-0}}" = "1" ]; then
+  (i=0; while [ ! -e out.ckpt ] && [ $i -lt 600 ]; do sleep 0.1; i=$((i + 1)); done; sleep 1; kill -9 $$) &
+fi
 exec "$@"
 SCRIPT
   chmod +x die.sh
-  mpi 3 ./die.sh "$raylab" render "${long[@]}" --threads 1 -o out.png --checkpoint out.ckpt 2>err.txt
+  mpi 3 ./die.sh "$raylab" render "${long[@]}" --threads 1 -o out.png --checkpoint out.ckpt --checkpoint-every 0.5 \
+    2>err.txt
   status=$?
   cat err.txt
   [ "$status" -ne 0 ] || fail "the run with a dead rank exited 0"
