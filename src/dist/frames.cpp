@@ -114,6 +114,19 @@ class FrameThread {
         }) {}
   void join() { m_thread.join(); }
 
+  /// What this thread did, as rank `rank`'s report, for a run that began at `start`.
+  RankReport report(int rank, const FramesOptions& options, Clock::time_point start) const {
+    RankReport r;
+    r.rank = rank;
+    r.host = options.host;
+    r.threads = options.threads;
+    r.jobs = frames;
+    r.stats = stats;
+    r.busy_seconds = busy;
+    r.wall_seconds = seconds_since(start);
+    return r;
+  }
+
   double busy = 0;
   RenderStats stats;
   int frames = 0;
@@ -272,15 +285,7 @@ FramesResult coordinate_frames(Channel& channel, const FramesOptions& options) {
   for (const auto& [frame, rank] : holder) result.unfinished.push_back(frame);
   result.unfinished.insert(result.unfinished.end(), pending.begin(), pending.end());
   std::sort(result.unfinished.begin(), result.unfinished.end());
-  RankReport mine;
-  mine.rank = 0;
-  mine.host = options.host;
-  mine.threads = options.threads;
-  mine.jobs = own.frames;
-  mine.stats = own.stats;
-  mine.busy_seconds = own.busy;
-  mine.wall_seconds = seconds_since(start);
-  result.ranks.push_back(mine);
+  result.ranks.push_back(own.report(0, options, start));
   for (int r = 1; r < channel.size(); ++r) {
     if (reported[static_cast<std::size_t>(r)]) result.ranks.push_back(reports[static_cast<std::size_t>(r)]);
   }
@@ -340,14 +345,7 @@ FramesResult serve_frames(Channel& channel, const FramesOptions& options) {
     channel.send(0, protocol::kFailed, protocol::encode_text(what(thread.failure)));
     result.outcome = DistributedOutcome::kFailed;
   } else if (stopped) {
-    RankReport report;
-    report.rank = channel.rank();
-    report.host = options.host;
-    report.threads = options.threads;
-    report.jobs = thread.frames;
-    report.stats = thread.stats;
-    report.busy_seconds = thread.busy;
-    report.wall_seconds = seconds_since(start);
+    const RankReport report = thread.report(channel.rank(), options, start);
     channel.send(0, protocol::kReport, protocol::encode(report));
     result.ranks.push_back(report);
   }
