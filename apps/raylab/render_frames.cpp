@@ -72,9 +72,8 @@ int run_frames(const RenderArgs& given) {
   const bool root = channel->rank() == 0;
   std::unique_ptr<RenderSetup> prepared;
   try {
-    RenderArgs checked = given;
     if (root) check_writable(frame_output(given.output, first));
-    prepared = prepare_render(checked, false);
+    prepared = prepare_render(given, false);
     if (prepared->scene.camera_path.empty()) {
       throw UsageError("--frames needs a camera path, and the scene '" + given.scene +
                        "' has none (a scene file's \"camera\": {\"path\": ...}; see docs/scene-format.md)");

@@ -22,8 +22,9 @@
 namespace raylab::cli {
 namespace {
 
-// Ends the run for an error before the render: rank 0 calls it off and reports the error (the
-// caller's handler prints it); another rank tells rank 0, which names it, and exits quietly.
+// Ends the run for an error outside the protocol (before the render, or an exception out of it):
+// rank 0 calls it off and rethrows (main() prints the error); another rank tells rank 0, which
+// names it, and exits quietly with `code`.
 int fail_before_render(dist::Channel& channel, const std::exception& e, int code) {
   if (channel.rank() == 0) {
     dist::call_off(channel);
@@ -112,7 +113,14 @@ int run_under_mpi(const RenderArgs& given) {
   }
   // From here the first signal stops handing out tiles and saves what is done.
   install_interrupt_handlers(remove_pending_temporary_files, false);
-  const dist::DistributedResult result = dist::render_distributed(channel, renderer, film, options);
+  dist::DistributedResult result;
+  try {
+    result = dist::render_distributed(channel, renderer, film, options);
+  } catch (const std::exception& e) {
+    // Not a rank's failure the protocol reports (those end the run in order): a bug or a
+    // resource running out here. The others must not wait for this rank until they time out.
+    return fail_before_render(channel, e, 3);
+  }
   if (!root) {
     if (result.outcome == dist::DistributedOutcome::kComplete) return 0;
     const int signal = interrupt_signal();

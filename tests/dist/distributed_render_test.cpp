@@ -126,7 +126,6 @@ TEST_P(DistributedRender, ImageHasTheBitsOfALocalRenderForAnyNumberOfRanks) {
     for (const RankReport& r : results[0].ranks) jobs += r.jobs;
     EXPECT_EQ(jobs, 4 * 3 * c.passes);  // 61x37 in tiles of 16: 4 x 3 tiles
     // The rays of all ranks together are those of the local render.
-    const Film unused(0, 0);
     RenderStats local;
     {
       Film again(scene.settings.width, scene.settings.height);
