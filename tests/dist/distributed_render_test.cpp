@@ -154,7 +154,7 @@ TEST(DistributedRenderFaults, InterruptedRunResumesToTheSameBits) {
     DistributedOptions o;
     o.render = options_for(true, 2);
     o.agreement = 7;
-    o.interrupt_grace_seconds = 0.2;
+    o.interrupt_grace_seconds = 1.0;  // generous: a loaded machine may be slow to answer
     if (r == 0) {
       o.render.progress = &progress;
       o.render.on_progress = [&](int, int) { ++done; };
@@ -242,7 +242,7 @@ TEST(DistributedRenderFaults, SilentRankHoldingTilesFailsTheRunNamingItsTiles) {
       [&](int r) {
         DistributedOptions o;
         o.render = options_for(true);
-        o.rank_timeout_seconds = 0.5;
+        o.rank_timeout_seconds = 2.0;  // well above the live ranks' 1 s heartbeat
         if (r == 0) o.render.on_checkpoint = [&](const RenderProgress& p) { saved = p; };
         if (r == 2) o.render.should_stop = [&] { return over.load(); };  // ends the dead rank's thread
         if (r == 0) o.on_stopping = [&](const std::string&) { over = true; };
