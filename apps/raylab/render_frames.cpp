@@ -60,9 +60,7 @@ int run_frames(const RenderArgs& given) {
   std::vector<std::unique_ptr<dist::Channel>> local;
   dist::Channel* channel = nullptr;
   if (dist::launched_by_mpi()) {
-    if (!dist::mpi_available()) {
-      throw UsageError("this process was started by an MPI launcher, but this raylab was built without MPI");
-    }
+    require_mpi_build();
     session.emplace();
     channel = &session->channel();
   } else {
@@ -79,13 +77,7 @@ int run_frames(const RenderArgs& given) {
                        "' has none (a scene file's \"camera\": {\"path\": ...}; see docs/scene-format.md)");
     }
   } catch (const std::exception& e) {
-    if (channel->size() == 1) throw;
-    if (root) {
-      dist::call_off(*channel);
-      throw;
-    }
-    dist::report_failure(*channel, e.what(), 30.0);
-    return dynamic_cast<const UsageError*>(&e) != nullptr ? 2 : 1;
+    return fail_outside_protocol(*channel, e);  // (one process: rethrown, there is no other rank)
   }
   RenderSetup& setup = *prepared;
   const RenderArgs& args = setup.args;
@@ -124,15 +116,17 @@ int run_frames(const RenderArgs& given) {
       if (bar) bar->update(written, total);
       if (!args.quiet && !interactive) fmt::print(stderr, "frame {}: wrote {}\n", f.frame, path);
     };
-    options.on_stopping = [](const std::string& message) {
-      fmt::print(stderr, "\nraylab: {}\n", message);
-      std::fflush(stderr);
-    };
+    options.on_stopping = print_stopping;
   }
   // From here the first signal stops handing out frames; the frames written stay.
   install_interrupt_handlers(remove_pending_temporary_files, false);
   const auto start = std::chrono::steady_clock::now();
-  const dist::FramesResult result = dist::render_frames_distributed(*channel, options);
+  dist::FramesResult result;
+  try {
+    result = dist::render_frames_distributed(*channel, options);
+  } catch (const std::exception& e) {
+    return fail_outside_protocol(*channel, e);
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!root) {
     if (result.outcome == dist::DistributedOutcome::kComplete) return 0;

@@ -17,6 +17,19 @@ namespace raylab::cli {
 /// One image across the ranks of the MPI job this process belongs to; every rank runs this.
 int run_under_mpi(const RenderArgs& args);
 
+/// Throws UsageError when this build has no MPI (for a process an MPI launcher started).
+void require_mpi_build();
+
+/// Ends a run for an error outside the distributed protocol (before the render, or an exception
+/// out of it); call it from the catch block. Rank 0 calls the run off and rethrows (main() prints
+/// the error and maps it to the exit code); another rank tells rank 0, which names it, and
+/// returns its exit code without a message (2 usage, 1 input, 3 anything else).
+int fail_outside_protocol(dist::Channel& channel, const std::exception& e);
+
+/// Rank 0: prints at once why a distributed run is ending early (before any waiting, in case the
+/// launcher kills the process soon after).
+void print_stopping(const std::string& message);
+
 /// Prints the per-rank table of --stats under MPI (`unit`: what a rank's jobs are, "tiles" or
 /// "frames") and the load imbalance.
 void print_rank_table(const std::vector<dist::RankReport>& ranks, const char* unit);

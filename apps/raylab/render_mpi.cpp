@@ -20,21 +20,29 @@
 #include "render_modes.h"
 
 namespace raylab::cli {
-namespace {
 
-// Ends the run for an error outside the protocol (before the render, or an exception out of it):
-// rank 0 calls it off and rethrows (main() prints the error); another rank tells rank 0, which
-// names it, and exits quietly with `code`.
-int fail_before_render(dist::Channel& channel, const std::exception& e, int code) {
-  if (channel.rank() == 0) {
-    dist::call_off(channel);
-    throw;  // main() prints it and maps it to the exit code
+void require_mpi_build() {
+  if (!dist::mpi_available()) {
+    throw UsageError(
+        "this process was started by an MPI launcher, but this raylab was built without MPI "
+        "(install libopenmpi-dev and rebuild, or run raylab without mpirun)");
   }
-  dist::report_failure(channel, e.what(), 30.0);
-  return code;
 }
 
-}  // namespace
+int fail_outside_protocol(dist::Channel& channel, const std::exception& e) {
+  if (channel.rank() == 0) {
+    dist::call_off(channel);
+    throw;  // the exception being handled: main() prints it and maps it to the exit code
+  }
+  dist::report_failure(channel, e.what(), 30.0);
+  if (dynamic_cast<const UsageError*>(&e) != nullptr) return 2;
+  return dynamic_cast<const InputError*>(&e) != nullptr ? 1 : 3;
+}
+
+void print_stopping(const std::string& message) {
+  fmt::print(stderr, "\nraylab: {}\n", message);
+  std::fflush(stderr);
+}
 
 void print_rank_table(const std::vector<dist::RankReport>& ranks, const char* unit) {
   fmt::print("{:<6}{:<16}{:>8}{:>8}{:>14}{:>10}{:>10}{:>10}\n", "rank", "host", "threads", unit, "rays", "busy s",
@@ -49,11 +57,7 @@ void print_rank_table(const std::vector<dist::RankReport>& ranks, const char* un
 }
 
 int run_under_mpi(const RenderArgs& given) {
-  if (!dist::mpi_available()) {
-    throw UsageError(
-        "this process was started by an MPI launcher, but this raylab was built without MPI "
-        "(install libopenmpi-dev and rebuild, or run raylab without mpirun)");
-  }
+  require_mpi_build();
   if (given.spd_protocol) throw UsageError("--spd-protocol renders in one process: run it without mpirun");
   // Until the render starts there is nothing to save: a signal ends the run at once.
   install_interrupt_handlers(remove_pending_temporary_files, true);
@@ -68,10 +72,8 @@ int run_under_mpi(const RenderArgs& given) {
                        " sampler refines the whole image at once and cannot be split across MPI ranks; use a "
                        "uniform sampler, or --frames to give each rank whole frames");
     }
-  } catch (const UsageError& e) {
-    return fail_before_render(channel, e, 2);
-  } catch (const InputError& e) {
-    return fail_before_render(channel, e, 1);
+  } catch (const std::exception& e) {
+    return fail_outside_protocol(channel, e);
   }
   RenderSetup& setup = *prepared;
   const RenderArgs& args = setup.args;
@@ -106,10 +108,7 @@ int run_under_mpi(const RenderArgs& given) {
         write_checkpoint(setup.checkpoint_path, checkpoint);
       };
     }
-    options.on_stopping = [&](const std::string& message) {
-      fmt::print(stderr, "\nraylab: {}\n", message);
-      std::fflush(stderr);
-    };
+    options.on_stopping = print_stopping;
   }
   // From here the first signal stops handing out tiles and saves what is done.
   install_interrupt_handlers(remove_pending_temporary_files, false);
@@ -119,7 +118,7 @@ int run_under_mpi(const RenderArgs& given) {
   } catch (const std::exception& e) {
     // Not a rank's failure the protocol reports (those end the run in order): a bug or a
     // resource running out here. The others must not wait for this rank until they time out.
-    return fail_before_render(channel, e, 3);
+    return fail_outside_protocol(channel, e);
   }
   if (!root) {
     if (result.outcome == dist::DistributedOutcome::kComplete) return 0;

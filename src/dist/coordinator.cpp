@@ -17,7 +17,6 @@
 
 #include "dist_util.h"
 #include "protocol.h"
-#include "raylab/core/index_ranges.h"
 
 namespace raylab::dist {
 namespace {
@@ -47,20 +46,21 @@ class Coordinator final : public TileJobSource {
         m_progress(progress),
         m_peers(static_cast<std::size_t>(channel.size())) {
     for (Peer& p : m_peers) p.last_heard = Clock::now();
+    const std::vector<int> unfinished = m_progress.unfinished_tiles();
     m_tiles_total = m_progress.passes * m_progress.tile_count();
     m_tiles_done = m_progress.passes_done * m_progress.tile_count() +
-                   (m_progress.tile_count() - static_cast<int>(m_progress.unfinished_tiles().size()));
-    for (int t : m_progress.unfinished_tiles()) m_pending.push_back(t);
+                   (m_progress.tile_count() - static_cast<int>(unfinished.size()));
+    m_pending.assign(unfinished.begin(), unfinished.end());
   }
 
   DistributedResult run() {
     const auto start = Clock::now();
-    std::exception_ptr local_failure;
+    ThreadFailure local_failure;
     std::thread threads([&] {
       try {
         m_renderer.run(*this);
       } catch (...) {
-        local_failure = std::current_exception();
+        local_failure.set_current();
         stop_handing_out();
       }
     });
@@ -69,7 +69,7 @@ class Coordinator final : public TileJobSource {
     auto last_heartbeat = Clock::now();
     while (!m_progress.complete()) {
       if (local_failure) {
-        fail(0, "rank 0 failed: " + what(local_failure));
+        fail(0, "rank 0 failed: " + local_failure.message());
         break;
       }
       if (m_options.render.should_stop && m_options.render.should_stop()) {
@@ -106,9 +106,6 @@ class Coordinator final : public TileJobSource {
       collect_reports();
     }
     threads.join();
-    if (local_failure && result.outcome == DistributedOutcome::kComplete) {
-      std::rethrow_exception(local_failure);  // (cannot happen: a local failure ends the loop)
-    }
     develop(m_progress, m_film);
     result.render.seconds = seconds_since(start);
     result.render.samples_per_pixel = samples_per_pixel(m_progress);
@@ -125,11 +122,9 @@ class Coordinator final : public TileJobSource {
     }
     own.wall_seconds = result.render.seconds;
     result.ranks.push_back(own);
-    for (const Peer& p : m_peers) {
+    for (const Peer& p : m_peers) {  // in rank order
       if (p.reported) result.ranks.push_back(p.report);
     }
-    std::sort(result.ranks.begin(), result.ranks.end(),
-              [](const RankReport& a, const RankReport& b) { return a.rank < b.rank; });
     for (const RankReport& r : result.ranks) result.render.stats += r.stats;
     result.render.interrupted = !m_progress.complete();
     if (result.outcome == DistributedOutcome::kComplete && !m_progress.complete()) {
@@ -320,10 +315,8 @@ class Coordinator final : public TileJobSource {
   void fail(int rank, const std::string& message) {
     if (!m_failure.empty()) return;
     const std::vector<int> tiles = held_by(rank);
-    m_failure =
-        message + (tiles.empty() ? "; it held no tiles"
-                                 : "; it held tile" + std::string(tiles.size() > 1 ? "s " : " ") + index_ranges(tiles) +
-                                       " of pass " + std::to_string(m_progress.passes_done + 1));
+    m_failure = message + held_suffix("tile", tiles) +
+                (tiles.empty() ? "" : " of pass " + std::to_string(m_progress.passes_done + 1));
   }
 
   void stop_handing_out() {
@@ -349,21 +342,15 @@ class Coordinator final : public TileJobSource {
       std::optional<Message> m = m_channel.receive(kPollSeconds);
       if (m) handle(*m, result);
     }
-    std::vector<std::string> silent;
+    std::vector<std::pair<int, std::vector<int>>> silent;
     for (int r = 1; r < m_channel.size(); ++r) {
-      const std::vector<int> tiles = held_by(r);
+      std::vector<int> tiles = held_by(r);
       // A live rank says it stops (on its own signal, or answering the abort); a dead one cannot.
-      if (tiles.empty() || m_peers[static_cast<std::size_t>(r)].stopping) continue;
-      silent.push_back("rank " + std::to_string(r) + " held tile" + (tiles.size() > 1 ? "s " : " ") +
-                       index_ranges(tiles) + " and did not answer");
+      if (!tiles.empty() && !m_peers[static_cast<std::size_t>(r)].stopping) silent.emplace_back(r, std::move(tiles));
     }
     if (!silent.empty()) {
-      // The launcher stops every rank when one dies: the one that did not answer is the one that died.
-      std::string message = "a rank stopped during the render:";
-      for (const std::string& s : silent) message += " " + s + ";";
-      message += " it has probably died, and the launcher stopped the others";
       result.outcome = DistributedOutcome::kFailed;
-      end_early(result, message, false);
+      end_early(result, silent_ranks_message("tile", silent), false);
       return;
     }
     result.message = "interrupted: saving the finished tiles";

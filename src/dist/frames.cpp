@@ -13,7 +13,6 @@
 #include "coordinator.h"
 #include "dist_util.h"
 #include "protocol.h"
-#include "raylab/core/index_ranges.h"
 #include "raylab/dist/distributed_frames.h"
 #include "wire.h"
 
@@ -108,7 +107,7 @@ class FrameThread {
               queue.done(std::move(frame));
             }
           } catch (...) {
-            failure = std::current_exception();
+            failure.set_current();
             queue.close(true);
           }
         }) {}
@@ -130,7 +129,7 @@ class FrameThread {
   double busy = 0;
   RenderStats stats;
   int frames = 0;
-  std::exception_ptr failure;  // read after join(), or as a flag while running
+  ThreadFailure failure;  // noticed by the message loop while the thread runs
 
  private:
   std::thread m_thread;
@@ -168,7 +167,7 @@ FramesResult coordinate_frames(Channel& channel, const FramesOptions& options) {
   auto fail = [&](int rank, const std::string& message) {
     if (!failure.empty()) return;
     const std::vector<int> frames = held_by(rank);
-    failure = message + (frames.empty() ? "; it held no frame" : "; it held frame " + index_ranges(frames));
+    failure = message + held_suffix("frame", frames);
   };
   auto deliver = [&](int rank, RenderedFrame f) {
     const auto h = holder.find(f.frame);
@@ -217,7 +216,7 @@ FramesResult coordinate_frames(Channel& channel, const FramesOptions& options) {
       last_heartbeat = Clock::now();
     }
     if (own.failure) {
-      fail(0, "rank 0 failed: " + what(own.failure));
+      fail(0, "rank 0 failed: " + own.failure.message());
       break;
     }
     if (options.should_stop && options.should_stop()) interrupt = true;
@@ -261,17 +260,12 @@ FramesResult coordinate_frames(Channel& channel, const FramesOptions& options) {
         if (std::optional<Message> m = channel.receive(kPollSeconds)) handle(*m);
         for (RenderedFrame& f : local.take_finished()) deliver(0, std::move(f));
       }
-      std::string silent;
+      std::vector<std::pair<int, std::vector<int>>> silent;
       for (int r = 1; r < channel.size(); ++r) {
-        const std::vector<int> frames = held_by(r);
-        if (!frames.empty() && !stopping[static_cast<std::size_t>(r)]) {
-          silent += " rank " + std::to_string(r) + " held frame " + index_ranges(frames) + " and did not answer;";
-        }
+        std::vector<int> frames = held_by(r);
+        if (!frames.empty() && !stopping[static_cast<std::size_t>(r)]) silent.emplace_back(r, std::move(frames));
       }
-      if (!silent.empty()) {
-        failure =
-            "a rank stopped during the render:" + silent + " it has probably died, and the launcher stopped the others";
-      }
+      if (!silent.empty()) failure = silent_ranks_message("frame", silent);
     }
     result.message = failure.empty() ? "interrupted: the frames written so far stay" : failure;
     result.outcome = failure.empty() ? DistributedOutcome::kInterrupted : DistributedOutcome::kFailed;
@@ -342,7 +336,7 @@ FramesResult serve_frames(Channel& channel, const FramesOptions& options) {
   queue.close(!stopped);
   thread.join();
   if (thread.failure) {
-    channel.send(0, protocol::kFailed, protocol::encode_text(what(thread.failure)));
+    channel.send(0, protocol::kFailed, protocol::encode_text(thread.failure.message()));
     result.outcome = DistributedOutcome::kFailed;
   } else if (stopped) {
     const RankReport report = thread.report(channel.rank(), options, start);

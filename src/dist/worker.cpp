@@ -20,12 +20,12 @@ DistributedResult serve(Channel& channel, TileRenderer& renderer, const Distribu
                protocol::encode(
                    protocol::Hello{options.agreement, protocol::build_signature(), renderer.threads(), options.host}));
   JobQueue queue;
-  std::exception_ptr failure;
+  ThreadFailure failure;
   std::thread threads([&] {
     try {
       renderer.run(queue);
     } catch (...) {
-      failure = std::current_exception();
+      failure.set_current();
       queue.abandon();
     }
   });
@@ -81,7 +81,7 @@ DistributedResult serve(Channel& channel, TileRenderer& renderer, const Distribu
   }
   threads.join();
   if (failure) {
-    result.message = what(failure);
+    result.message = failure.message();
     send(protocol::kFailed, protocol::encode_text(result.message));
     result.outcome = DistributedOutcome::kFailed;
   } else if (stopped) {
