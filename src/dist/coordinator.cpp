@@ -104,6 +104,12 @@ class Coordinator final : public TileJobSource {
     } else {
       for (int r = 1; r < m_channel.size(); ++r) m_channel.send(r, protocol::kStop, {});
       collect_reports();
+      // A rank whose hello comes only now (it started late) is still checked: one that loaded
+      // another scene fails the run whether or not the others finished without it.
+      if (!m_failure.empty()) {
+        result.outcome = DistributedOutcome::kFailed;
+        end_early(result, m_failure);
+      }
     }
     threads.join();
     develop(m_progress, m_film);
@@ -369,7 +375,8 @@ class Coordinator final : public TileJobSource {
     m_channel.flush(1.0);
   }
 
-  // After kStop: every rank's report (a rank that never answers is left out of the table).
+  // After kStop: every rank's report (a rank that never answers is left out of the table), and
+  // the hello of any rank that has not said it yet.
   void collect_reports() {
     const auto start = Clock::now();
     auto missing = [&] {
@@ -378,10 +385,10 @@ class Coordinator final : public TileJobSource {
       }
       return false;
     };
-    DistributedResult ignored;
-    while (missing() && seconds_since(start) < m_options.rank_timeout_seconds) {
+    DistributedResult ignored;  // (an interrupt now changes nothing: every tile is in)
+    while (missing() && m_failure.empty() && seconds_since(start) < m_options.rank_timeout_seconds) {
       std::optional<Message> m = m_channel.receive(kPollSeconds);
-      if (m && m->tag == protocol::kReport) handle(*m, ignored);
+      if (m) handle(*m, ignored);
     }
   }
 

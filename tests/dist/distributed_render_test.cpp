@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -183,17 +185,52 @@ TEST(DistributedRenderFaults, InterruptedRunResumesToTheSameBits) {
   EXPECT_TRUE(same_bits(resumed, reference));
 }
 
+// A channel that notes when its rank has sent its first message.
+class NotingChannel final : public Channel {
+ public:
+  NotingChannel(std::unique_ptr<Channel> inner, std::atomic<bool>& sent) : m_inner(std::move(inner)), m_sent(sent) {}
+  int rank() const override { return m_inner->rank(); }
+  int size() const override { return m_inner->size(); }
+  void send(int to, int tag, std::vector<std::uint8_t> bytes) override {
+    m_inner->send(to, tag, std::move(bytes));
+    m_sent = true;
+  }
+  std::optional<Message> receive(double seconds) override { return m_inner->receive(seconds); }
+  void flush(double seconds) override { m_inner->flush(seconds); }
+
+ private:
+  std::unique_ptr<Channel> m_inner;
+  std::atomic<bool>& m_sent;
+};
+
+// An on_progress for rank 0 that holds its render threads after each tile until `flag` is set (10 s
+// at most), so that rank 0 cannot finish the image before the other rank has spoken, however late
+// that rank starts. Only for runs whose other ranks send no results: those would call it from
+// rank 0's message loop.
+std::function<void(int, int)> wait_for(const std::atomic<bool>& flag) {
+  return [&flag](int, int) {
+    for (int i = 0; i < 1000 && !flag.load(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  };
+}
+
 TEST(DistributedRenderFaults, RankWithAnotherSceneIsRefusedByName) {
   const Scene scene = test_scene("box");
+  auto channels = make_local_channels(2);
+  std::atomic<bool> greeted{false};
+  channels[1] = std::make_unique<NotingChannel>(std::move(channels[1]), greeted);
   Film film(scene.settings.width, scene.settings.height);
-  const std::vector<DistributedResult> results = run_ranks(3, scene, film, [&](int r) {
-    DistributedOptions o;
-    o.render = options_for(true);
-    o.agreement = r == 2 ? 99 : 1;
-    return o;
-  });
+  const std::vector<DistributedResult> results = run_ranks(
+      2, scene, film,
+      [&](int r) {
+        DistributedOptions o;
+        o.render = options_for(true);
+        o.agreement = r == 1 ? 99 : 1;
+        if (r == 0) o.render.on_progress = wait_for(greeted);
+        return o;
+      },
+      std::move(channels));
   EXPECT_EQ(results[0].outcome, DistributedOutcome::kFailed);
-  EXPECT_NE(results[0].message.find("rank 2"), std::string::npos) << results[0].message;
+  EXPECT_NE(results[0].message.find("rank 1"), std::string::npos) << results[0].message;
   EXPECT_NE(results[0].message.find("another scene"), std::string::npos) << results[0].message;
   EXPECT_EQ(results[1].outcome, DistributedOutcome::kFailed);  // told to stop
 }
@@ -201,57 +238,70 @@ TEST(DistributedRenderFaults, RankWithAnotherSceneIsRefusedByName) {
 TEST(DistributedRenderFaults, RankThatFailsBeforeRenderingIsNamedWithItsReason) {
   const Scene scene = test_scene("box");
   auto channels = make_local_channels(2);
+  std::atomic<bool> reported{false};
+  channels[1] = std::make_unique<NotingChannel>(std::move(channels[1]), reported);
   std::thread worker([&] { report_failure(*channels[1], "cannot read 'bunny.obj'", 10.0); });
   auto rank0 = make_rank(scene, options_for(true));
   Film film(scene.settings.width, scene.settings.height);
   DistributedOptions o;
   o.render = options_for(true);
+  o.render.on_progress = wait_for(reported);
   const DistributedResult result = render_distributed(*channels[0], *rank0->renderer, film, o);
   worker.join();
   EXPECT_EQ(result.outcome, DistributedOutcome::kFailed);
   EXPECT_NE(result.message.find("rank 1 failed: cannot read 'bunny.obj'"), std::string::npos) << result.message;
 }
 
-// A channel that falls silent, as a killed process does, once it has received its first job.
+// A channel that falls silent, as a killed process does, once it has received its first job
+// (the first message with contents: heartbeats and the stop are empty).
 class DyingChannel final : public Channel {
  public:
-  explicit DyingChannel(std::unique_ptr<Channel> inner) : m_inner(std::move(inner)) {}
+  DyingChannel(std::unique_ptr<Channel> inner, std::atomic<bool>& died) : m_inner(std::move(inner)), m_died(died) {}
   int rank() const override { return m_inner->rank(); }
   int size() const override { return m_inner->size(); }
   void send(int to, int tag, std::vector<std::uint8_t> bytes) override { m_inner->send(to, tag, std::move(bytes)); }
   std::optional<Message> receive(double seconds) override {
     std::optional<Message> m = m_inner->receive(seconds);
-    if (m) silence(*m_inner);
+    if (m && !m->bytes.empty()) {
+      silence(*m_inner);
+      m_died = true;
+    }
     return m;
   }
   void flush(double) override {}
 
  private:
   std::unique_ptr<Channel> m_inner;
+  std::atomic<bool>& m_died;
 };
 
 TEST(DistributedRenderFaults, SilentRankHoldingTilesFailsTheRunNamingItsTiles) {
   const Scene scene = test_scene("box");
-  auto channels = make_local_channels(3);
-  channels[2] = std::make_unique<DyingChannel>(std::move(channels[2]));
+  auto channels = make_local_channels(2);
+  std::atomic<bool> died{false};
+  channels[1] = std::make_unique<DyingChannel>(std::move(channels[1]), died);
   std::atomic<bool> over{false};
   Film film(scene.settings.width, scene.settings.height);
   RenderProgress saved;
   const std::vector<DistributedResult> results = run_ranks(
-      3, scene, film,
+      2, scene, film,
       [&](int r) {
         DistributedOptions o;
         o.render = options_for(true);
-        o.rank_timeout_seconds = 2.0;  // well above the live ranks' 1 s heartbeat
-        if (r == 0) o.render.on_checkpoint = [&](const RenderProgress& p) { saved = p; };
-        if (r == 2) o.render.should_stop = [&] { return over.load(); };  // ends the dead rank's thread
-        if (r == 0) o.on_stopping = [&](const std::string&) { over = true; };
+        o.rank_timeout_seconds = 2.0;  // well above a live rank's 1 s heartbeat
+        if (r == 0) {
+          o.render.on_checkpoint = [&](const RenderProgress& p) { saved = p; };
+          o.on_stopping = [&](const std::string&) { over = true; };
+          o.render.on_progress = wait_for(died);  // until rank 1 holds jobs (it never sends a result)
+        }
+        if (r == 1) o.render.should_stop = [&] { return over.load(); };  // ends the dead rank's thread
         return o;
       },
       std::move(channels));
-  ASSERT_EQ(results[0].outcome, DistributedOutcome::kFailed);
+  ASSERT_TRUE(died.load());
+  ASSERT_EQ(results[0].outcome, DistributedOutcome::kFailed) << results[0].message;
   const std::string& m = results[0].message;
-  EXPECT_NE(m.find("rank 2 has not answered"), std::string::npos) << m;
+  EXPECT_NE(m.find("rank 1 has not answered"), std::string::npos) << m;
   EXPECT_NE(m.find("it held tile"), std::string::npos) << m;
   // The tiles it held are unfinished in the checkpoint; the finished ones are kept.
   ASSERT_EQ(saved.tile_count(), 12);
