@@ -45,10 +45,6 @@ std::vector<BenchRayKind> kinds_of(const std::string& name) {
   return {BenchRayKind::kPrimary, BenchRayKind::kShadow, BenchRayKind::kDiffuse};
 }
 
-void write_text(const std::string& path, const std::string& text) {
-  write_file_atomically(path, std::span(reinterpret_cast<const unsigned char*>(text.data()), text.size()));
-}
-
 int run(const BenchArgs& args) {
   const bool json_stdout = args.json == "-";
   for (const std::string* path : {&args.rays_out, &args.hits_out, &args.json}) {
@@ -89,7 +85,7 @@ int run(const BenchArgs& args) {
   if (json_stdout) {
     fmt::print("{}", format_bench_json(report, args.scene));
   } else if (!args.json.empty()) {
-    write_text(args.json, format_bench_json(report, args.scene));
+    write_text_atomically(args.json, format_bench_json(report, args.scene));
   }
   if (!args.rays_out.empty()) write_rays(args.rays_out, report.last_rays);
   if (!args.hits_out.empty()) {

@@ -48,10 +48,6 @@ void image_size(const CompareArgs& args, const RenderSettings& s, RaySetOptions&
   if (args.height && !args.width) rays.width = std::max(1, static_cast<int>(std::lround(*args.height / aspect)));
 }
 
-void write_text(const std::string& path, const std::string& text) {
-  write_file_atomically(path, std::span(reinterpret_cast<const unsigned char*>(text.data()), text.size()));
-}
-
 int run(const CompareArgs& args) {
   if (!args.plot.empty() && !args.plot.ends_with(".svg")) {
     throw UsageError("cannot write '" + args.plot + "': the plot is an SVG file (.svg)");
@@ -81,8 +77,8 @@ int run(const CompareArgs& args) {
   if (!mismatches.empty()) fmt::print("\n{}", mismatches);
   std::fflush(stdout);
 
-  if (!args.csv.empty()) write_text(args.csv, format_compare_csv(result));
-  if (!args.json.empty()) write_text(args.json, format_compare_json(result, args.scene));
+  if (!args.csv.empty()) write_text_atomically(args.csv, format_compare_csv(result));
+  if (!args.json.empty()) write_text_atomically(args.json, format_compare_json(result, args.scene));
   if (!args.plot.empty()) write_compare_chart(result, args.scene, args.plot);
   std::vector<std::string> written;
   if (!args.heatmaps.empty()) written = write_compare_heatmaps(result, args.heatmaps);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "commands.h"
+#include "raylab/io/atomic_file.h"
 #include "raylab/io/image_io.h"
 
 namespace raylab::cli {
@@ -15,13 +16,20 @@ namespace {
 struct DiffArgs {
   std::string first, second;
   std::optional<double> max_rmse;
+  std::optional<std::string> image;  ///< where to write the difference image
+  float scale = 1.f;                 ///< its amplification
 };
 
 int run(const DiffArgs& args) {
+  if (args.image) check_writable(*args.image);  // fail before reading, not after
   const Film a = read_image(args.first);
   const Film b = read_image(args.second);
   const double rmse = image_rmse(a, b);
   fmt::print("rmse {:.4f} (8-bit sRGB steps) over {}x{} pixels\n", rmse, a.width(), a.height());
+  if (args.image) {
+    write_image(difference_image(a, b, args.scale), *args.image);
+    fmt::print("wrote {} (|difference| x {})\n", *args.image, args.scale);
+  }
   if (args.max_rmse && rmse > *args.max_rmse) {
     fmt::print(stderr, "raylab diff: images differ: rmse {:.4f} > {:.4f}\n", rmse, *args.max_rmse);
     return 1;
@@ -38,6 +46,12 @@ CommandRunner add_diff_command(CLI::App& app) {
   cmd->add_option("second", args->second, "Second image")->required();
   cmd->add_option("--max-rmse", args->max_rmse, "Exit with 1 when the RMSE exceeds this")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--image", args->image,
+                  "Also write where the images differ: |first - second| of the display values, times --scale, "
+                  "black where they agree");
+  cmd->add_option("--scale", args->scale, "Amplification of the --image difference")
+      ->check(CLI::Range(1e-3, 1e6))
+      ->capture_default_str();
   return [args] { return run(*args); };
 }
 

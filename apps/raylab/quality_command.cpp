@@ -42,10 +42,6 @@ struct QualityArgs {
   bool quiet = false;
 };
 
-void write_text(const std::string& path, const std::string& text) {
-  write_file_atomically(path, std::span(reinterpret_cast<const unsigned char*>(text.data()), text.size()));
-}
-
 // The image size: as given, else the scene's; one of the two given keeps the scene's aspect.
 void image_size(const QualityArgs& args, RenderSettings& s) {
   const double aspect = static_cast<double>(s.height) / static_cast<double>(std::max(s.width, 1));
@@ -133,8 +129,8 @@ int run(const QualityArgs& args) {
   if (const std::optional<BarRatios> ratios = bar_ratios(result)) fmt::print("\n{}\n", format_bar_ratios(*ratios));
   std::fflush(stdout);
 
-  if (!args.csv.empty()) write_text(args.csv, format_quality_csv(result));
-  if (!args.json.empty()) write_text(args.json, format_quality_json(result, args.scene));
+  if (!args.csv.empty()) write_text_atomically(args.csv, format_quality_csv(result));
+  if (!args.json.empty()) write_text_atomically(args.json, format_quality_json(result, args.scene));
   if (!args.plot.empty()) write_quality_chart(result, args.scene, args.plot);
   if (!args.quiet) {
     for (const std::string* path : {&args.csv, &args.json, &args.plot}) {

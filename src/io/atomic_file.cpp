@@ -114,6 +114,10 @@ void write_file_atomically(const std::string& path, std::span<const unsigned cha
   }
 }
 
+void write_text_atomically(const std::string& path, std::string_view text) {
+  write_file_atomically(path, std::span(reinterpret_cast<const unsigned char*>(text.data()), text.size()));
+}
+
 void remove_pending_temporary_files() noexcept {
   for (PendingSlot& slot : g_pending) {
     if (slot.armed.load()) ::unlink(slot.name);  // gone already once renamed into place: harmless

@@ -234,11 +234,19 @@ std::vector<ImageLayer> read_exr_channels(const std::string& path) {
   }
 }
 
-double image_rmse(const Film& a, const Film& b) {
+namespace {
+
+void require_same_size(const Film& a, const Film& b) {
   if (a.width() != b.width() || a.height() != b.height()) {
     throw InputError("", "images differ in size: " + std::to_string(a.width()) + "x" + std::to_string(a.height()) +
                              " and " + std::to_string(b.width()) + "x" + std::to_string(b.height()));
   }
+}
+
+}  // namespace
+
+double image_rmse(const Film& a, const Film& b) {
+  require_same_size(a, b);
   double sum = 0.0;
   for (std::size_t i = 0; i < a.pixels().size(); ++i) {
     for (int k = 0; k < 3; ++k) {
@@ -248,6 +256,20 @@ double image_rmse(const Film& a, const Film& b) {
   }
   const double n = 3.0 * static_cast<double>(a.pixels().size());
   return n > 0 ? std::sqrt(sum / n) : 0.0;
+}
+
+Film difference_image(const Film& a, const Film& b, float scale) {
+  require_same_size(a, b);
+  Film out(a.width(), a.height());
+  for (int y = 0; y < a.height(); ++y) {
+    for (int x = 0; x < a.width(); ++x) {
+      for (int k = 0; k < 3; ++k) {
+        const float d = std::abs(linear_to_srgb(a.at(x, y)[k]) - linear_to_srgb(b.at(x, y)[k]));
+        out.at(x, y)[k] = srgb_to_linear(std::min(1.f, d * scale));
+      }
+    }
+  }
+  return out;
 }
 
 }  // namespace raylab

@@ -174,6 +174,14 @@ TEST_F(Cli, DiffExitCodes) {
   EXPECT_EQ(run("diff '" + a + "' '" + small + "'").code, 1);  // sizes differ
   EXPECT_EQ(run("diff '" + a + "' '" + (work() / "missing.pfm").string() + "'").code, 1);
   EXPECT_EQ(run("diff '" + a + "' '" + b + "' --max-rmse -1").code, 2);
+
+  // --image writes where they differ (here everywhere, white); an unwritable one is refused first.
+  r = run("diff '" + a + "' '" + b + "' --image '" + out_file("d.png") + "' --scale 4");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(image_rmse(read_image(out_file("d.png")), white), 0.0);
+  r = run("diff '" + a + "' '" + b + "' --image '" + out_file("none/d.png") + "'");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(r.out.find("rmse"), std::string::npos) << r.out;
 }
 
 std::vector<unsigned char> bytes_of(const std::string& s) { return {s.begin(), s.end()}; }

@@ -199,5 +199,23 @@ TEST(ImageRmse, SizeMismatchThrowsInputError) {
   EXPECT_THROW(image_rmse(Film(4, 3), Film(4, 2)), InputError);
 }
 
+// The difference image shows |a - b| of the display values times the scale, clamped to 1: a
+// PNG of it holds exactly those values (black where the images agree).
+TEST(DifferenceImage, ShowsTheScaledDisplayDifference) {
+  Film a = filled(3, 2, {0.f, 0.f, 0.f});
+  Film b = a;
+  b.at(1, 0) = {0.21404114f, 0.f, 1.f};  // display values 0.5, 0 and 1
+  const Film d = difference_image(a, b, 1.5f);
+  for (int y = 0; y < 2; ++y) {
+    for (int x = 0; x < 3; ++x) {
+      const Color want = x == 1 && y == 0 ? Color{0.75f, 0.f, 1.f} : Color{0.f, 0.f, 0.f};  // 1.5 clamps to 1
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(linear_to_srgb(d.at(x, y)[k]), want[k], 1e-5f) << x << y << k;
+    }
+  }
+  EXPECT_EQ(image_rmse(difference_image(b, b, 8.f), a), 0.0);                            // agreeing images give black
+  EXPECT_EQ(image_rmse(difference_image(a, b, 2.f), difference_image(b, a, 2.f)), 0.0);  // symmetric
+  EXPECT_THROW(difference_image(Film(4, 3), Film(3, 4), 1.f), InputError);
+}
+
 }  // namespace
 }  // namespace raylab

@@ -4,6 +4,7 @@
 
 #include <span>
 #include <string>
+#include <string_view>
 
 namespace raylab {
 
@@ -11,6 +12,9 @@ namespace raylab {
 /// then renamed over `path`. On failure the temporary is removed, any previous `path` is left
 /// untouched, and InputError says why (missing folder, no permission, disk full).
 void write_file_atomically(const std::string& path, std::span<const unsigned char> bytes);
+
+/// Writes `text` to `path` atomically, as write_file_atomically does with bytes.
+void write_text_atomically(const std::string& path, std::string_view text);
 
 /// Removes the temporary files of the atomic writes under way, if any. Async-signal-safe (only
 /// unlink), for a signal handler about to end the process: the targets stay as they were, and no

@@ -55,4 +55,9 @@ std::vector<ImageLayer> read_exr_channels(const std::string& path);
 /// the sizes differ.
 double image_rmse(const Film& a, const Film& b);
 
+/// Where two images of equal size differ: each channel is the absolute difference of the
+/// display-encoded (sRGB) values times `scale`, clamped to 1, stored so that a PNG of the result
+/// shows exactly that value (black where the images agree). Throws InputError if the sizes differ.
+Film difference_image(const Film& a, const Film& b, float scale);
+
 }  // namespace raylab
