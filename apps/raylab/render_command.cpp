@@ -29,6 +29,7 @@
 #include "raylab/render/progress.h"
 #include "raylab/render/renderer.h"
 #include "raylab/render/spd_protocol.h"
+#include "raylab/render/spd_protocol_report.h"
 #include "raylab/sampling/filter.h"
 #include "raylab/sampling/pixel_sampler.h"
 #include "raylab/scene/builtin_scenes.h"
@@ -52,12 +53,35 @@ void list_scenes() {
   fmt::print("scene and mesh files: {}\n", extensions);
 }
 
-void print_protocol_counts(const SpdProtocolCounts& c) {
-  fmt::print("SPD protocol: 512x512, eye rays through the 513x513 pixel corners, depth 5\n");
-  fmt::print("{:<20}{:>14}{:>14}\n", "rays", "cast", "hit");
-  fmt::print("{:<20}{:>14}{:>14}\n", "primary", c.primary, c.primary_hits);
-  fmt::print("{:<20}{:>14}{:>14}\n", "shadow", c.shadow, c.shadow_hits);
-  fmt::print("{:<20}{:>14}{:>14}\n", "secondary", c.secondary, c.secondary_hits);
+// The SPD testing procedure: the image, the counts as a table (on stderr when the JSON goes to
+// stdout, so that stdout stays one JSON document) and as JSON.
+int run_spd_protocol(RenderSetup& setup, const RenderOptions& options) {
+  const RenderArgs& args = setup.args;
+  const ShadowFacing facing = parse_spd_facing(args.spd_facing.value_or("viewer")).value();
+  std::optional<SpdSource> source;
+  if (is_spd_source(args.scene)) source = parse_spd_source(args.scene);
+  const SpdSource* spd = source ? &*source : nullptr;
+
+  Film film(kSpdProtocolSize, kSpdProtocolSize);
+  const SpdProtocolResult result = render_spd_protocol(setup.scene, *setup.accel, film, options, facing);
+  write_image(film, args.output);
+  const bool json_stdout = args.json == "-";
+  std::FILE* table = json_stdout ? stderr : stdout;
+  fmt::print(table, "{}", format_spd_protocol_table(result.counts, facing, spd));
+  std::fflush(table);
+  if (args.json) {
+    const std::string json = format_spd_protocol_json(result, args.scene, facing, spd);
+    if (json_stdout) {
+      fmt::print("{}", json);
+    } else {
+      write_text_atomically(*args.json, json);
+    }
+  }
+  if (args.stats) print_stats(result.stats, setup.accel->info(), result.seconds);
+  if (!args.quiet) {
+    fmt::print(table, "wrote {} in {}\n", args.output, ProgressBar::format_duration(result.seconds));
+  }
+  return 0;
 }
 
 std::vector<std::string> sampler_choices() {
@@ -77,6 +101,10 @@ int run(const RenderArgs& given) {
   if (given.spd_protocol && (given.passes || given.checkpoint || given.resume || given.frames)) {
     throw UsageError("--spd-protocol renders in one go: no --passes, --checkpoint, --resume or --frames");
   }
+  if (!given.spd_protocol && (given.spd_facing || given.json)) {
+    throw UsageError(std::string(given.spd_facing ? "--spd-facing" : "--json") + " applies to --spd-protocol only");
+  }
+  if (given.json && *given.json != "-") check_writable(*given.json);  // fail before the work, not after it
   if (given.frames) return run_frames(given);
   if (dist::launched_by_mpi()) return run_under_mpi(given);
   // Until the render starts there is nothing to save: a signal ends the run at once.
@@ -87,15 +115,7 @@ int run(const RenderArgs& given) {
   Scene& scene = setup.scene;  // (the SPD protocol sets its own camera settings)
   const RenderSettings& s = scene.settings;
   RenderOptions options = render_options(setup);
-  if (args.spd_protocol) {
-    Film film(kSpdProtocolSize, kSpdProtocolSize);
-    const SpdProtocolResult result = render_spd_protocol(scene, *setup.accel, film, options);
-    write_image(film, args.output);
-    print_protocol_counts(result.counts);
-    if (args.stats) print_stats(result.stats, setup.accel->info(), result.seconds);
-    if (!args.quiet) fmt::print("wrote {} in {}\n", args.output, ProgressBar::format_duration(result.seconds));
-    return 0;
-  }
+  if (args.spd_protocol) return run_spd_protocol(setup, options);
   Film film(s.width, s.height);
   const bool interactive = ::isatty(STDERR_FILENO) != 0;
   std::optional<ProgressBar> bar;
@@ -230,7 +250,14 @@ CommandRunner add_render_command(CLI::App& app) {
   cmd->add_flag("--list-scenes", args->list_scenes, "List the built-in scenes and SPD generators, then exit");
   cmd->add_flag("--spd-protocol", args->spd_protocol,
                 "Render by the SPD testing procedure (512x512, rays through pixel corners, depth 5) and print "
-                "the ray-count invariants");
+                "the ray counts (beside the SPD README's statistics when the scene is one of its seven at its "
+                "size)");
+  cmd->add_option("--spd-facing", args->spd_facing,
+                  "With --spd-protocol: which normal must face a light for a shadow ray (rule 10): viewer (the "
+                  "normal turned toward the ray, default) or outward (the primitive's own)")
+      ->check(CLI::IsMember(spd_facing_names()));
+  cmd->add_option("--json", args->json,
+                  "With --spd-protocol: also write the ray counts as JSON to this file ('-': stdout)");
   return [args] { return run(*args); };
 }
 

@@ -116,6 +116,7 @@ void print_stats(const RenderStats& s, const AccelInfo& info, double seconds) {
   const double total = static_cast<double>(s.total_rays());
   fmt::print("{:<12}{:>14}{:>14}\n", "total", s.total_rays(), hits);
   fmt::print("non-finite samples        {} (NaN or infinite radiance, replaced by black)\n", s.nonfinite_samples);
+  fmt::print("total internal reflections {} (reflection ray only)\n", s.total_internal_reflections);
   fmt::print("nodes visited per ray     {:.2f}\n", total > 0 ? s.traversal.nodes_visited / total : 0.0);
   fmt::print("primitive tests per ray   {:.2f}\n", total > 0 ? s.traversal.prim_tests / total : 0.0);
   if (s.traversal.volume_tests > 0) {

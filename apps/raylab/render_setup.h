@@ -40,6 +40,8 @@ struct RenderArgs {
   bool allow_outside_paths = false;
   bool list_scenes = false;
   bool spd_protocol = false;
+  std::optional<std::string> spd_facing;  ///< with --spd-protocol: "viewer" or "outward"
+  std::optional<std::string> json;        ///< with --spd-protocol: the counts as JSON to this file ('-': stdout)
   std::optional<int> passes;
   std::optional<std::string> checkpoint, resume;
   double checkpoint_every = 60.0;

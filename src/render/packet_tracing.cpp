@@ -57,7 +57,8 @@ void PrimaryPacketTracer::trace_shadows(std::size_t light, std::size_t lanes) {
   std::size_t count = 0;
   for (std::size_t i = 0; i < lanes; ++i) {
     if (!m_hits[i].valid()) continue;
-    if (!WhittedIntegrator::single_sample_shadow_ray(l, m_surfaces[i], m_shadow_rays[count])) continue;
+    if (!WhittedIntegrator::single_sample_shadow_ray(l, m_surfaces[i], m_ctx.shadow_facing, m_shadow_rays[count]))
+      continue;
     m_shadow_lane[count++] = static_cast<std::uint8_t>(i);
   }
   if (count == 0) return;

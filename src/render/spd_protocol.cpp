@@ -15,8 +15,35 @@
 
 namespace raylab {
 
-SpdProtocolResult render_spd_protocol(Scene& scene, const Accelerator& accel, Film& film,
-                                      const RenderOptions& options) {
+std::vector<std::string> spd_facing_names() { return {"viewer", "outward"}; }
+
+std::optional<ShadowFacing> parse_spd_facing(std::string_view name) {
+  if (name == "viewer") return ShadowFacing::kViewer;
+  if (name == "outward") return ShadowFacing::kOutward;
+  return std::nullopt;
+}
+
+std::string_view spd_facing_name(ShadowFacing facing) {
+  return facing == ShadowFacing::kOutward ? "outward" : "viewer";
+}
+
+SpdProtocolCounts spd_protocol_counts(const RenderStats& stats) {
+  const auto kind = [](RayKind k) { return static_cast<int>(k); };
+  SpdProtocolCounts c;
+  c.primary = stats.rays[kind(RayKind::kPrimary)];
+  c.primary_hits = stats.ray_hits[kind(RayKind::kPrimary)];
+  c.reflection = stats.rays[kind(RayKind::kReflection)];
+  c.reflection_hits = stats.ray_hits[kind(RayKind::kReflection)];
+  c.refraction = stats.rays[kind(RayKind::kRefraction)];
+  c.refraction_hits = stats.ray_hits[kind(RayKind::kRefraction)];
+  c.shadow = stats.rays[kind(RayKind::kShadow)];
+  c.shadow_hits = stats.ray_hits[kind(RayKind::kShadow)];
+  c.total_internal_reflections = stats.total_internal_reflections;
+  return c;
+}
+
+SpdProtocolResult render_spd_protocol(Scene& scene, const Accelerator& accel, Film& film, const RenderOptions& options,
+                                      ShadowFacing facing) {
   const int n = kSpdProtocolSize;
   if (film.width() != n || film.height() != n) throw std::invalid_argument("SPD protocol film must be 512 x 512");
   RenderSettings& settings = scene.settings;
@@ -37,7 +64,7 @@ SpdProtocolResult render_spd_protocol(Scene& scene, const Accelerator& accel, Fi
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, corners, 1), [&](const tbb::blocked_range<int>& rows) {
       RenderStats& stats = thread_stats.local();
-      const TraceContext ctx{scene, accel, stats, options.count_traversal};
+      const TraceContext ctx{scene, accel, stats, options.count_traversal, facing};
       for (int y = rows.begin(); y != rows.end(); ++y) {
         for (int x = 0; x < corners; ++x) {
           // SPD scenes have point lights only; the generator is there for area lights, seeded
@@ -62,14 +89,7 @@ SpdProtocolResult render_spd_protocol(Scene& scene, const Accelerator& accel, Fi
     }
   }
   for (const RenderStats& st : thread_stats) result.stats += st;
-  const auto kind = [](RayKind k) { return static_cast<int>(k); };
-  const RenderStats& s = result.stats;
-  result.counts.primary = s.rays[kind(RayKind::kPrimary)];
-  result.counts.primary_hits = s.ray_hits[kind(RayKind::kPrimary)];
-  result.counts.shadow = s.rays[kind(RayKind::kShadow)];
-  result.counts.shadow_hits = s.ray_hits[kind(RayKind::kShadow)];
-  result.counts.secondary = s.rays[kind(RayKind::kReflection)] + s.rays[kind(RayKind::kRefraction)];
-  result.counts.secondary_hits = s.ray_hits[kind(RayKind::kReflection)] + s.ray_hits[kind(RayKind::kRefraction)];
+  result.counts = spd_protocol_counts(result.stats);
   return result;
 }
 

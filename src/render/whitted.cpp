@@ -44,13 +44,29 @@ int sample_grid(const Light& light) {
   return std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<float>(std::max(1, light.samples))))));
 }
 
-// Sample (sx, sy) of the `grid` x `grid` stratification of `light` seen from `p` (shading normal
-// `n`, geometric normal `ng`): fills `ls` and the shadow ray toward it. Returns false when no
-// shadow ray is cast (no distance to the sample, or the surface faces away). Draws two numbers
-// from `rng` when grid > 1 and none otherwise, which is what lets the packet path precompute the
-// shadow rays of single-sample lights. One function for both paths, so that they agree bit for bit.
-bool sample_light(const Light& light, int grid, int sx, int sy, Vec3 p, Vec3 n, Vec3 ng, Pcg32* rng, LightSample& ls,
-                  Ray& shadow) {
+// The point being shaded, as light sampling sees it.
+struct ShadingPoint {
+  Vec3 p;           // position
+  Vec3 n;           // shading normal, toward the arriving ray
+  Vec3 ng;          // geometric normal, toward the arriving ray
+  bool front_face;  // the ray arrived on the side the primitive's own normal points to
+};
+
+// True when both normals of `at` face direction `wi`: the viewer-side normals, or for
+// ShadowFacing::kOutward the primitive's own (turned back where the ray arrived from behind).
+bool faces(const ShadingPoint& at, Vec3 wi, ShadowFacing facing) {
+  const float side = facing == ShadowFacing::kOutward && !at.front_face ? -1.f : 1.f;
+  return side * dot(at.n, wi) > 0.f && side * dot(at.ng, wi) > 0.f;
+}
+
+// Sample (sx, sy) of the `grid` x `grid` stratification of `light` seen from `at`: fills `ls`
+// and the shadow ray toward it. Returns false when no shadow ray is cast (no distance to the
+// sample, or the surface faces away by the `facing` rule). Draws two numbers from `rng` when
+// grid > 1 and none otherwise, which is what lets the packet path precompute the shadow rays of
+// single-sample lights. One function for both paths, so that they agree bit for bit.
+bool sample_light(const Light& light, int grid, int sx, int sy, const ShadingPoint& at, ShadowFacing facing, Pcg32* rng,
+                  LightSample& ls, Ray& shadow) {
+  const Vec3 p = at.p;
   if (light.kind == Light::Kind::kDirectional) {
     ls.wi = normalize(-light.direction);
     ls.distance = INFINITY;
@@ -76,9 +92,9 @@ bool sample_light(const Light& light, int grid, int sx, int sy, Vec3 p, Vec3 n, 
   }
   ls.radiance = light.intensity * (1.f / static_cast<float>(grid * grid));
   if (light.falloff && std::isfinite(ls.distance)) ls.radiance /= ls.distance * ls.distance;
-  // Only surfaces that face the light cast a shadow ray (SPD testing procedure).
-  if (dot(n, ls.wi) <= 0.f || dot(ng, ls.wi) <= 0.f) return false;
-  shadow.origin = offset_origin(p, ng, ls.wi);
+  // Only surfaces that face the light cast a shadow ray (SPD testing procedure, rule 10).
+  if (!faces(at, ls.wi, facing)) return false;
+  shadow.origin = offset_origin(p, at.ng, ls.wi);
   shadow.direction = ls.wi;
   shadow.tmin = 0.f;
   shadow.tmax = std::isfinite(ls.distance) ? ls.distance * (1.f - kShadowShorten) : INFINITY;
@@ -88,7 +104,7 @@ bool sample_light(const Light& light, int grid, int sx, int sy, Vec3 p, Vec3 n, 
 // Contribution of `light` at the shading point, averaging stratified positions for area lights:
 // a soft shadow is the fraction of the light's samples that the point sees. `answer` replaces
 // the shadow ray when it is decided (single-sample lights only).
-Color shade_light(const TraceContext& ctx, const Light& light, const Material& m, Color base, Vec3 p, Vec3 n, Vec3 ng,
+Color shade_light(const TraceContext& ctx, const Light& light, const Material& m, Color base, const ShadingPoint& at,
                   Vec3 view, Pcg32& rng, ShadowAnswer answer) {
   const int grid = sample_grid(light);
   Color sum{0.f};
@@ -96,11 +112,13 @@ Color shade_light(const TraceContext& ctx, const Light& light, const Material& m
     for (int sx = 0; sx < grid; ++sx) {
       LightSample ls;
       Ray shadow;
-      if (!sample_light(light, grid, sx, sy, p, n, ng, &rng, ls, shadow)) continue;
+      if (!sample_light(light, grid, sx, sy, at, ctx.shadow_facing, &rng, ls, shadow)) continue;
       const bool blocked =
           answer == ShadowAnswer::kTrace ? cast_shadow_ray(ctx, shadow) : answer == ShadowAnswer::kBlocked;
-      if (blocked) continue;
-      sum += phong(m, base, n, view, ls.wi, ls.radiance);
+      // Light reaches only the side the ray sees (under the outward reading a shadow ray can be
+      // cast from a back face toward a light on the other side: it is counted, and adds nothing).
+      if (blocked || !faces(at, ls.wi, ShadowFacing::kViewer)) continue;
+      sum += phong(m, base, at.n, view, ls.wi, ls.radiance);
     }
   }
   return sum;
@@ -135,9 +153,11 @@ bool WhittedIntegrator::refract(Vec3 d, Vec3 n, float eta, Vec3& out) {
 
 bool WhittedIntegrator::is_single_sample(const Light& light) { return sample_grid(light) == 1; }
 
-bool WhittedIntegrator::single_sample_shadow_ray(const Light& light, const SurfaceInteraction& si, Ray& shadow) {
+bool WhittedIntegrator::single_sample_shadow_ray(const Light& light, const SurfaceInteraction& si, ShadowFacing facing,
+                                                 Ray& shadow) {
   LightSample ls;
-  return sample_light(light, 1, 0, 0, si.position, si.shading_normal, si.geometric_normal, nullptr, ls, shadow);
+  const ShadingPoint at{si.position, si.shading_normal, si.geometric_normal, si.front_face};
+  return sample_light(light, 1, 0, 0, at, facing, nullptr, ls, shadow);
 }
 
 Color WhittedIntegrator::trace(const TraceContext& ctx, Ray ray, int depth, RayKind kind, Pcg32& rng,
@@ -165,35 +185,44 @@ Color WhittedIntegrator::shade(const TraceContext& ctx, const Ray& ray, const Su
   }
 
   Color result = m.emission + scene.settings.ambient * base * m.kd;
+  const ShadingPoint at{si.position, n, ng, si.front_face};
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
     const ShadowAnswer answer = shadows.empty() ? ShadowAnswer::kTrace : shadows[l];
-    result += shade_light(ctx, scene.lights[l], m, base, si.position, n, ng, view, rng, answer);
+    result += shade_light(ctx, scene.lights[l], m, base, at, view, rng, answer);
   }
 
   // Capped whatever the settings say: each level is a frame of this recursion on the stack.
   if (depth >= std::min(scene.settings.max_depth, WhittedIntegrator::kMaxDepth)) return result;
 
+  // Which rays spawn follows the SPD procedure's rules 8 and 9 and depends only on the material's
+  // kind and the geometry, never on a weight: a transmitter reflects at every hit (as a
+  // dielectric interface does) and refracts unless total internal reflection occurs.
   float reflect_weight = m.reflectivity;
   float refract_weight = 0.f;
+  bool spawn_reflection = m.reflectivity > 0.f;
+  bool spawn_refraction = false;
   Vec3 refracted;
   if (m.transmittance > 0.f) {
+    spawn_reflection = true;
     const float eta_i = si.front_face ? 1.f : m.ior;
     const float eta_t = si.front_face ? m.ior : 1.f;
-    if (refract(d, n, eta_i / eta_t, refracted)) {
+    spawn_refraction = refract(d, n, eta_i / eta_t, refracted);
+    if (spawn_refraction) {
       const float f = m.fresnel ? fresnel_dielectric(dot(view, n), eta_i, eta_t) : 0.f;
       reflect_weight += m.transmittance * f;
       refract_weight = m.transmittance * (1.f - f);
     } else {
       reflect_weight += m.transmittance;  // total internal reflection
+      ++ctx.stats.total_internal_reflections;
     }
   }
-  if (reflect_weight > 0.f) {
+  if (spawn_reflection) {
     Ray r;
     r.direction = reflect(d, n);
     r.origin = offset_origin(si.position, ng, r.direction);
     result += trace(ctx, r, depth + 1, RayKind::kReflection, rng) * reflect_weight;
   }
-  if (refract_weight > 0.f) {
+  if (spawn_refraction) {
     Ray r;
     r.direction = normalize(refracted);
     r.origin = offset_origin(si.position, ng, r.direction);

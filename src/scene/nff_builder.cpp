@@ -57,7 +57,9 @@ std::uint32_t NffSceneBuilder::current_object() {
   m.reflectivity = m_fill.ks;
   m.transmittance = m_fill.transmittance;
   m.ior = m_fill.ior > 0.f ? m_fill.ior : 1.f;
-  m.fresnel = false;  // NFF weights reflection by Ks and refraction by T, nothing else
+  // Ks is a mirror share of its own; T is a dielectric interface, which Fresnel splits between a
+  // reflected and a refracted ray (the SPD procedure's rules 8 and 9: transmitters reflect too).
+  m.fresnel = true;
   const std::uint32_t material = m_scene.add_material(m);
   m_object = m_scene.add_object(m.name, material);
   return m_object;

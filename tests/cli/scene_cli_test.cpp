@@ -2,6 +2,12 @@
 // --spd-protocol, info, convert, and the exit codes of bad scenes.
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "cli_fixture.h"
 #include "raylab/io/image_io.h"
@@ -32,20 +38,75 @@ TEST_F(Cli, ListScenesNamesBuiltInsAndGenerators) {
   }
 }
 
+// The row of `kind` in the protocol's table, as its numbers.
+std::vector<std::uint64_t> protocol_row(const std::string& out, const std::string& kind) {
+  const auto at = out.find("\n" + kind + " ");
+  if (at == std::string::npos) return {};
+  std::istringstream row(out.substr(at + 1 + kind.size(), out.find('\n', at + 1) - at - 1 - kind.size()));
+  std::vector<std::uint64_t> numbers;
+  for (std::string word; row >> word;) {
+    if (word.find('.') == std::string::npos) numbers.push_back(std::stoull(word));
+  }
+  return numbers;
+}
+
 TEST_F(Cli, SpdProtocolPrintsTheRayCountInvariants) {
   const CliResult r = run("render 'spd:balls?size=1' --spd-protocol -q -o '" + out_file("p.png") + "'");
   ASSERT_EQ(r.code, 0) << r.err;
-  const auto primary = r.out.find("\nprimary ");
-  ASSERT_NE(primary, std::string::npos) << r.out;
-  const std::string row = r.out.substr(primary + 1, r.out.find('\n', primary + 1) - primary - 1);
-  EXPECT_NE(row.find(" 263169 "), std::string::npos) << row;  // 513 x 513 eye rays
-  for (const char* row : {"shadow", "secondary"}) EXPECT_NE(r.out.find(row), std::string::npos) << r.out;
+  ASSERT_EQ(protocol_row(r.out, "eye").size(), 2u) << r.out;
+  EXPECT_EQ(protocol_row(r.out, "eye")[0], 513u * 513u) << r.out;
+  for (const char* kind : {"reflection", "refraction", "shadow"}) {
+    EXPECT_EQ(protocol_row(r.out, kind).size(), 2u) << kind << "\n" << r.out;  // cast, hit
+  }
+  // Size 1 is not a size the SPD README counted: no column of its figures.
+  EXPECT_EQ(r.out.find("SPD README"), std::string::npos) << r.out;
   const Film film = read_image(out_file("p.png"));
   EXPECT_EQ(film.width(), 512);
   // The procedure fixes size and depth; asking for others is a usage error.
   const CliResult bad = run("render spd:balls --spd-protocol --width 100 -q -o '" + out_file("q.png") + "'");
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("--spd-protocol"), std::string::npos) << bad.err;
+}
+
+// At the README's size the table gains the README's figure and the ratio; --json - puts the
+// same counts on stdout as one JSON document (the table then goes to stderr).
+TEST_F(Cli, SpdProtocolComparesWithTheReadmeAndWritesJson) {
+  const CliResult r = run("render spd:tetra --spd-protocol -q -o '" + out_file("t.png") + "' --json -");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("SPD README"), std::string::npos) << r.err;
+  const std::vector<std::uint64_t> eye = protocol_row(r.err, "eye");  // cast, hit, README's eye hits
+  ASSERT_EQ(eye.size(), 3u) << r.err;
+  EXPECT_EQ(eye[2], 49788u);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["scene"], "spd:tetra");
+  EXPECT_EQ(j["facing"], "viewer");
+  EXPECT_EQ(j["rays"]["eye"]["cast"], 513u * 513u);
+  EXPECT_EQ(j["rays"]["eye"]["hit"], eye[1]);
+  EXPECT_EQ(j["rays"]["shadow"]["cast"], protocol_row(r.err, "shadow")[0]);
+  ASSERT_EQ(j["published"].size(), 2u);  // the README and Havran & Sixta
+  EXPECT_EQ(j["published"][0]["table"], "SPD README");
+  EXPECT_EQ(j["published"][0]["figures"][0]["published"], 49788u);
+
+  // To a file, with the other reading of rule 10.
+  const CliResult f = run("render spd:tetra --spd-protocol --spd-facing outward -q -o '" + out_file("u.png") +
+                          "' --json '" + out_file("t.json") + "'");
+  ASSERT_EQ(f.code, 0) << f.err;
+  EXPECT_NE(f.out.find("by the outward normal"), std::string::npos) << f.out;
+  EXPECT_EQ(nlohmann::json::parse(read_text(out_file("t.json")))["facing"], "outward");
+}
+
+TEST_F(Cli, SpdProtocolOptionsAreCheckedBeforeTheRender) {
+  // Protocol options without the protocol, and an unknown reading, are usage errors.
+  for (const char* extra : {"--spd-facing outward", "--json -", "--spd-protocol --spd-facing inward"}) {
+    SCOPED_TRACE(extra);
+    const CliResult r = run(std::string("render 'spd:balls?size=1' ") + extra + " -q -o '" + out_file("x.png") + "'");
+    EXPECT_EQ(r.code, 2) << r.err;
+  }
+  // A JSON file that cannot be written is refused before anything is rendered or written.
+  const CliResult r = run("render 'spd:balls?size=1' --spd-protocol -q -o '" + out_file("x.png") + "' --json '" +
+                          out_file("missing/x.json") + "'");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_TRUE(entries(out()).empty());
 }
 
 TEST_F(Cli, BadSpdNamesAndSizesAreUsageErrors) {

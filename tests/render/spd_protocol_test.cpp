@@ -31,8 +31,10 @@ void expect_same(const SpdProtocolCounts& a, const SpdProtocolCounts& b) {
   EXPECT_EQ(a.primary_hits, b.primary_hits);
   EXPECT_EQ(a.shadow, b.shadow);
   EXPECT_EQ(a.shadow_hits, b.shadow_hits);
-  EXPECT_EQ(a.secondary, b.secondary);
-  EXPECT_EQ(a.secondary_hits, b.secondary_hits);
+  EXPECT_EQ(a.reflection, b.reflection);
+  EXPECT_EQ(a.reflection_hits, b.reflection_hits);
+  EXPECT_EQ(a.refraction, b.refraction);
+  EXPECT_EQ(a.refraction_hits, b.refraction_hits);
 }
 
 class SpdProtocol : public ::testing::TestWithParam<std::string> {};
@@ -46,7 +48,8 @@ TEST_P(SpdProtocol, CountsAreTheSameForEveryAcceleratorAtSmallSize) {
   EXPECT_GT(brute.primary_hits, 0u);
   EXPECT_LE(brute.primary_hits, brute.primary);
   EXPECT_LE(brute.shadow_hits, brute.shadow);
-  EXPECT_LE(brute.secondary_hits, brute.secondary);
+  EXPECT_LE(brute.reflection_hits, brute.reflection);
+  EXPECT_LE(brute.refraction_hits, brute.refraction);
   for (const char* name : {"bvh", "bvh2", "grid", "octree"}) {
     SCOPED_TRACE(name);
     expect_same(protocol_counts(source, name), brute);

@@ -38,6 +38,9 @@ struct RenderStats {
   /// Samples whose radiance came out NaN or infinite (from any path of the sample's ray tree);
   /// each was replaced by black, so that one bad sample cannot poison its pixel.
   std::uint64_t nonfinite_samples = 0;
+  /// Transmitter hits (below the depth limit) where Snell's law has no refracted direction: total
+  /// internal reflection, which spawns a reflection ray and no refraction ray.
+  std::uint64_t total_internal_reflections = 0;
 
   /// Counts one ray of `kind`, and whether it hit.
   constexpr void count(RayKind kind, bool hit) {
@@ -58,6 +61,7 @@ struct RenderStats {
     }
     traversal += o.traversal;
     nonfinite_samples += o.nonfinite_samples;
+    total_internal_reflections += o.total_internal_reflections;
     return *this;
   }
 };

@@ -14,13 +14,29 @@
 
 namespace raylab {
 
+/// Which normal decides whether a surface faces a light (the SPD testing procedure's rule 10: "a
+/// shadow ray is not generated if the surface normal points away from the light"). The rule can
+/// be read two ways, and published ray counts differ by which one their tracer followed.
+enum class ShadowFacing : std::uint8_t {
+  /// The normal turned toward the arriving ray: a surface is lit from the side the ray sees. At a
+  /// hit on the inside of a glass sphere, shadow rays go toward the lights on the inner side of
+  /// the tangent plane there.
+  kViewer = 0,
+  /// The primitive's own (outward) normal, whichever side the ray came from. At a hit on the
+  /// inside of a glass sphere no shadow ray goes toward a light on the inner side of the tangent
+  /// plane (behind the surface, seen from outside); one goes toward each light on the outer side,
+  /// and is counted, but adds nothing: the side the ray sees faces away from that light.
+  kOutward,
+};
+
 /// Everything one thread needs to trace: the scene, its structure, whether to count traversal
-/// work, and where to count.
+/// work, where to count, and the facing rule for shadow rays.
 struct TraceContext {
   const Scene& scene;
   const Accelerator& accel;
   RenderStats& stats;
-  bool count_traversal = false;  ///< use the counted kernels (slower; for --stats)
+  bool count_traversal = false;                        ///< use the counted kernels (slower; for --stats)
+  ShadowFacing shadow_facing = ShadowFacing::kViewer;  ///< which normal must face a light for a shadow ray
 };
 
 /// What a primary ray met first: the features adaptive sampling compares between samples.
@@ -39,9 +55,15 @@ enum class ShadowAnswer : std::uint8_t {
 
 /// Whitted-style recursive ray tracer.
 ///  - Depth: a ray at depth `max_depth` is the last; secondary rays start at depth 2.
-///  - Shadow rays are cast only when the surface faces the light (N.L > 0).
-///  - Dielectrics (transmittance > 0): reflection and refraction weighted by the exact Fresnel
-///    equations (unpolarised); total internal reflection sends all the weight to reflection.
+///  - Shadow rays are cast only when the surface faces the light (N.L > 0), N chosen by
+///    TraceContext::shadow_facing; light adds only to the side the ray sees.
+///  - Reflectors (reflectivity > 0) spawn a mirror reflection ray.
+///  - Transmitters (transmittance > 0) spawn a reflection ray at every hit and a refraction ray
+///    unless total internal reflection occurs (SPD testing procedure, rules 8 and 9; a dielectric
+///    interface always reflects). With Material::fresnel the exact unpolarised Fresnel equations
+///    split the transmittance between the two (reflection = reflectivity + T F, refraction =
+///    T (1 - F)); without it the reflection ray carries the reflectivity alone. Total internal
+///    reflection sends all of T to the reflection ray.
 ///  - Area lights: `Light::samples` stratified shadow rays, randomised by `rng`.
 class WhittedIntegrator {
  public:
@@ -68,8 +90,9 @@ class WhittedIntegrator {
   static bool is_single_sample(const Light& light);
 
   /// The shadow ray shading casts toward single-sample `light` from `si`, in `shadow`; false when
-  /// it casts none (the surface faces away from the light, or sits on it).
-  static bool single_sample_shadow_ray(const Light& light, const SurfaceInteraction& si, Ray& shadow);
+  /// it casts none (the surface faces away from the light by the `facing` rule, or sits on it).
+  static bool single_sample_shadow_ray(const Light& light, const SurfaceInteraction& si, ShadowFacing facing,
+                                       Ray& shadow);
 
   /// The background seen by a ray leaving in direction `dir`.
   static Color background(const RenderSettings& s, Vec3 dir);

@@ -28,8 +28,18 @@ std::span<const SpdGenerator> spd_generators();
 /// True when `source` starts with "spd:".
 bool is_spd_source(std::string_view source);
 
-/// Builds the scene `source` names ("spd:balls", "spd:balls?size=6"). Throws UsageError for an
-/// unknown name, an unknown parameter, or a size out of range, listing what is valid.
+/// A generator and the size factor a source asks it for.
+struct SpdSource {
+  const SpdGenerator* generator = nullptr;  ///< never null once parsed
+  int size = 0;                             ///< 1..generator->max_size
+};
+
+/// The generator and size `source` names ("spd:balls" is balls at its default size,
+/// "spd:balls?size=6" at size 6). Throws UsageError for an unknown name, an unknown parameter,
+/// or a size out of range, listing what is valid.
+SpdSource parse_spd_source(std::string_view source);
+
+/// Builds the scene `source` names (see parse_spd_source, which throws the same errors).
 Scene make_spd_scene(std::string_view source);
 
 }  // namespace raylab

@@ -14,7 +14,7 @@ std::span<const SpdGenerator> spd_generators() {
 
 bool is_spd_source(std::string_view source) { return source.starts_with("spd:"); }
 
-Scene make_spd_scene(std::string_view source) {
+SpdSource parse_spd_source(std::string_view source) {
   std::string_view rest = source.substr(4);
   std::string_view query;
   if (const auto q = rest.find('?'); q != std::string_view::npos) {
@@ -50,9 +50,14 @@ Scene make_spd_scene(std::string_view source) {
                        std::to_string(generator->default_size) + ")");
     }
   }
+  return {generator, size};
+}
+
+Scene make_spd_scene(std::string_view source) {
+  const SpdSource spd = parse_spd_source(source);
   Scene scene;
   NffSceneBuilder builder(scene);
-  generator->generate(size, builder);
+  spd.generator->generate(spd.size, builder);
   builder.finish();
   return scene;
 }
