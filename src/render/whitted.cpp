@@ -46,26 +46,27 @@ int sample_grid(const Light& light) {
 
 // The point being shaded, as light sampling sees it.
 struct ShadingPoint {
-  Vec3 p;           // position
-  Vec3 n;           // shading normal, toward the arriving ray
-  Vec3 ng;          // geometric normal, toward the arriving ray
-  bool front_face;  // the ray arrived on the side the primitive's own normal points to
+  Vec3 p;   // position
+  Vec3 n;   // shading normal, toward the arriving ray
+  Vec3 ng;  // geometric normal, toward the arriving ray
+  // The normals rule 10 holds against each light: n and ng, or for ShadowFacing::kOutward the
+  // primitive's own (turned back where the ray arrived from behind).
+  Vec3 rule_n, rule_ng;
 };
 
-// True when both normals of `at` face direction `wi`: the viewer-side normals, or for
-// ShadowFacing::kOutward the primitive's own (turned back where the ray arrived from behind).
-bool faces(const ShadingPoint& at, Vec3 wi, ShadowFacing facing) {
-  const float side = facing == ShadowFacing::kOutward && !at.front_face ? -1.f : 1.f;
-  return side * dot(at.n, wi) > 0.f && side * dot(at.ng, wi) > 0.f;
+ShadingPoint shading_point(const SurfaceInteraction& si, ShadowFacing facing) {
+  const bool turn = facing == ShadowFacing::kOutward && !si.front_face;
+  const Vec3 n = si.shading_normal, ng = si.geometric_normal;
+  return {si.position, n, ng, turn ? -n : n, turn ? -ng : ng};
 }
 
 // Sample (sx, sy) of the `grid` x `grid` stratification of `light` seen from `at`: fills `ls`
 // and the shadow ray toward it. Returns false when no shadow ray is cast (no distance to the
-// sample, or the surface faces away by the `facing` rule). Draws two numbers from `rng` when
+// sample, or the surface faces away by rule 10). Draws two numbers from `rng` when
 // grid > 1 and none otherwise, which is what lets the packet path precompute the shadow rays of
 // single-sample lights. One function for both paths, so that they agree bit for bit.
-bool sample_light(const Light& light, int grid, int sx, int sy, const ShadingPoint& at, ShadowFacing facing, Pcg32* rng,
-                  LightSample& ls, Ray& shadow) {
+bool sample_light(const Light& light, int grid, int sx, int sy, const ShadingPoint& at, Pcg32* rng, LightSample& ls,
+                  Ray& shadow) {
   const Vec3 p = at.p;
   if (light.kind == Light::Kind::kDirectional) {
     ls.wi = normalize(-light.direction);
@@ -93,7 +94,7 @@ bool sample_light(const Light& light, int grid, int sx, int sy, const ShadingPoi
   ls.radiance = light.intensity * (1.f / static_cast<float>(grid * grid));
   if (light.falloff && std::isfinite(ls.distance)) ls.radiance /= ls.distance * ls.distance;
   // Only surfaces that face the light cast a shadow ray (SPD testing procedure, rule 10).
-  if (!faces(at, ls.wi, facing)) return false;
+  if (dot(at.rule_n, ls.wi) <= 0.f || dot(at.rule_ng, ls.wi) <= 0.f) return false;
   shadow.origin = offset_origin(p, at.ng, ls.wi);
   shadow.direction = ls.wi;
   shadow.tmin = 0.f;
@@ -112,12 +113,13 @@ Color shade_light(const TraceContext& ctx, const Light& light, const Material& m
     for (int sx = 0; sx < grid; ++sx) {
       LightSample ls;
       Ray shadow;
-      if (!sample_light(light, grid, sx, sy, at, ctx.shadow_facing, &rng, ls, shadow)) continue;
+      if (!sample_light(light, grid, sx, sy, at, &rng, ls, shadow)) continue;
       const bool blocked =
           answer == ShadowAnswer::kTrace ? cast_shadow_ray(ctx, shadow) : answer == ShadowAnswer::kBlocked;
       // Light reaches only the side the ray sees (under the outward reading a shadow ray can be
       // cast from a back face toward a light on the other side: it is counted, and adds nothing).
-      if (blocked || !faces(at, ls.wi, ShadowFacing::kViewer)) continue;
+      if (blocked) continue;
+      if (ctx.shadow_facing != ShadowFacing::kViewer && (dot(at.n, ls.wi) <= 0.f || dot(at.ng, ls.wi) <= 0.f)) continue;
       sum += phong(m, base, at.n, view, ls.wi, ls.radiance);
     }
   }
@@ -156,8 +158,7 @@ bool WhittedIntegrator::is_single_sample(const Light& light) { return sample_gri
 bool WhittedIntegrator::single_sample_shadow_ray(const Light& light, const SurfaceInteraction& si, ShadowFacing facing,
                                                  Ray& shadow) {
   LightSample ls;
-  const ShadingPoint at{si.position, si.shading_normal, si.geometric_normal, si.front_face};
-  return sample_light(light, 1, 0, 0, at, facing, nullptr, ls, shadow);
+  return sample_light(light, 1, 0, 0, shading_point(si, facing), nullptr, ls, shadow);
 }
 
 Color WhittedIntegrator::trace(const TraceContext& ctx, Ray ray, int depth, RayKind kind, Pcg32& rng,
@@ -185,7 +186,7 @@ Color WhittedIntegrator::shade(const TraceContext& ctx, const Ray& ray, const Su
   }
 
   Color result = m.emission + scene.settings.ambient * base * m.kd;
-  const ShadingPoint at{si.position, n, ng, si.front_face};
+  const ShadingPoint at = shading_point(si, ctx.shadow_facing);
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
     const ShadowAnswer answer = shadows.empty() ? ShadowAnswer::kTrace : shadows[l];
     result += shade_light(ctx, scene.lights[l], m, base, at, view, rng, answer);
