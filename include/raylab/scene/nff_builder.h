@@ -25,7 +25,8 @@ struct NffView {
 };
 
 /// NFF's `f` entity: colour, diffuse and specular weights, Phong exponent, transmittance and
-/// index of refraction. Ks weights both the highlight and the mirror-reflected ray.
+/// index of refraction. Ks weights both the highlight and the mirror-reflected ray; T is a
+/// dielectric interface, split between reflection and refraction by Fresnel.
 struct NffFill {
   Color color{1.f, 1.f, 1.f};
   float kd = 1.f;
