@@ -10,30 +10,15 @@
 #include "raylab/accel/factory.h"
 #include "raylab/render/renderer.h"
 #include "raylab/render/whitted.h"
+#include "trace_one.h"
 
 namespace raylab {
 namespace {
 
 constexpr float kDeg = std::numbers::pi_v<float> / 180.f;
 
-// What one traced ray gave, with the rays it cost.
-struct Traced {
-  Color color;
-  RenderStats stats;
-};
-
-// Traces one primary ray through a BVH over `scene` (which must not change afterwards).
-Traced trace_one(const Scene& scene, Vec3 origin, Vec3 direction) {
-  const std::unique_ptr<Accelerator> accel = make_accelerator("bvh", scene.geometry);
-  Traced out;
-  const TraceContext ctx{scene, *accel, out.stats};
-  Pcg32 rng(7);
-  Ray ray;
-  ray.origin = origin;
-  ray.direction = normalize(direction);
-  out.color = WhittedIntegrator::trace(ctx, ray, 1, RayKind::kPrimary, rng);
-  return out;
-}
+using test::trace_one;
+using test::Traced;
 
 int kind(RayKind k) { return static_cast<int>(k); }
 

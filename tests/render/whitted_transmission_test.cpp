@@ -6,33 +6,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <memory>
 #include <numbers>
 
-#include "raylab/accel/factory.h"
 #include "raylab/render/whitted.h"
+#include "trace_one.h"
 
 namespace raylab {
 namespace {
 
 constexpr float kDeg = std::numbers::pi_v<float> / 180.f;
 
-struct Traced {
-  Color color;
-  RenderStats stats;
-};
-
-Traced trace_one(const Scene& scene, Vec3 origin, Vec3 direction, ShadowFacing facing = ShadowFacing::kViewer) {
-  const std::unique_ptr<Accelerator> accel = make_accelerator("bvh", scene.geometry);
-  Traced out;
-  const TraceContext ctx{scene, *accel, out.stats, false, facing};
-  Pcg32 rng(7);
-  Ray ray;
-  ray.origin = origin;
-  ray.direction = normalize(direction);
-  out.color = WhittedIntegrator::trace(ctx, ray, 1, RayKind::kPrimary, rng);
-  return out;
-}
+using test::trace_one;
+using test::Traced;
 
 // Radiance 1 in every channel, to within the weight left at the depth limit and float rounding.
 void expect_near(Color c) {
