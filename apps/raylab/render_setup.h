@@ -69,8 +69,8 @@ struct RenderSetup {
 
 /// Loads and checks everything before the pixels: usage errors (UsageError) and input errors
 /// (InputError) come out here, before any work. `writes_outputs`: whether this process writes
-/// the image and checkpoints (and so checks that it can); `checkpoints`: whether checkpoints
-/// will be taken as the render goes (for the memory estimate).
+/// the image and checkpoints (and so checks that it can). Whether checkpoints will be taken as
+/// the render goes (for the memory estimate) follows from the arguments (saves_checkpoints).
 std::unique_ptr<RenderSetup> prepare_render(const RenderArgs& given, bool writes_outputs);
 
 /// The RenderOptions of the command line (threads, packets, statistics, passes).

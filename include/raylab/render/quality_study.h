@@ -28,10 +28,6 @@ std::vector<std::string> quality_sampler_names();
 /// seed; one seed measures them fairly enough, and the others' spread shows their variance.)
 bool sampler_is_deterministic(std::string_view sampler);
 
-/// True for the samplers that place a varying number of samples per pixel (adaptive-corners,
-/// adaptive); for them the budget is the largest number of samples a pixel may get.
-bool sampler_is_adaptive(std::string_view sampler);
-
 /// The sample count a sampler really uses for `budget`: valid_spp for the uniform samplers
 /// (center 1, regular and jittered a square, sobol a power of two), the budget itself (the most
 /// per pixel) for the adaptive ones.
