@@ -8,7 +8,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <random>
 #include <thread>
 
@@ -83,7 +85,13 @@ std::vector<std::string> split(const std::string& s) {
 
 TEST_F(LongRender, KilledAtRandomMomentsAndResumedGivesTheSameBytes) {
   const std::string settings = "render demo --width 96 --height 54 --spp 36 --threads 2 -q";
+  const auto start = std::chrono::steady_clock::now();
   ASSERT_EQ(run(settings + " -o '" + out_file("reference.pfm") + "'").code, 0);
+  // Signals land at random moments over the whole run, start-up included, as long as it takes
+  // on this machine (under a sanitizer, start-up alone can take 0.2 s).
+  const auto whole_run =
+      std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - start);
+  const auto moments = static_cast<unsigned>(std::max<std::int64_t>(whole_run.count(), 50000));
   const std::string reference = read_text(out_file("reference.pfm"));
   std::mt19937 random(20261202);
   const int kSignals[] = {SIGINT, SIGTERM, SIGKILL, 0 /* SIGINT twice */};
@@ -109,7 +117,7 @@ TEST_F(LongRender, KilledAtRandomMomentsAndResumedGivesTheSameBytes) {
         ASSERT_EQ(render.wait(), 0) << read_text(work() / "stderr.txt");
         break;
       }
-      std::this_thread::sleep_for(std::chrono::microseconds(random() % 250000));
+      std::this_thread::sleep_for(std::chrono::microseconds(random() % moments));
       render.signal(sig == 0 ? SIGINT : sig);
       if (sig == 0) render.signal(SIGINT);
       const int code = render.wait();
@@ -182,11 +190,15 @@ TEST_F(LongRender, PassesWriteTheImageAfterEachPassAndEndWithTheSameBytes) {
 
 TEST_F(LongRender, ACheckpointOfOtherSettingsOrDamagedIsRefused) {
   const std::string image = out_file("slow.pfm"), checkpoint = out_file("slow.ckpt");
-  const Background render(split("render demo --width 64 --height 16 --spp 1024 --threads 1 -q -o " + image),
-                          work() / "e.txt");
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  render.signal(SIGTERM);
-  ASSERT_EQ(render.wait(), 143);
+  // A signal before the render has started ends the run with nothing to save; wait longer until
+  // one lands during the render (start-up takes 0.2 s under a sanitizer on a loaded machine).
+  for (int wait_ms = 200; wait_ms <= 3200 && !fs::exists(checkpoint); wait_ms *= 2) {
+    const Background render(split("render demo --width 64 --height 16 --spp 1024 --threads 1 -q -o " + image),
+                            work() / "e.txt");
+    std::this_thread::sleep_for(std::chrono::milliseconds(wait_ms));
+    render.signal(SIGTERM);
+    ASSERT_EQ(render.wait(), 143);
+  }
   ASSERT_TRUE(fs::exists(checkpoint)) << "the default checkpoint sits beside the output";
   const CliResult other = run("render demo --width 64 --height 16 --spp 256 -o " + image + " --resume " + checkpoint);
   EXPECT_EQ(other.code, 1);
