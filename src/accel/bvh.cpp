@@ -5,6 +5,7 @@
 
 #include "raylab/accel/bvh.h"
 
+#include "bvh_depth.h"
 #include "traversal_common.h"
 
 namespace raylab {
@@ -57,7 +58,8 @@ inline bool hit_node(const BvhNode& node, const BvhBoxRay& r, float tmin, float 
   return t_near <= t_far;
 }
 
-constexpr int kStackSize = 128;  // the builder bounds depth well below this (see bvh_build.cpp)
+constexpr int kStackSize = 128;
+static_assert(kStackSize >= bvh_depth::kBinaryStackSize, "the builder's depth bound must fit the stack");
 
 }  // namespace
 

@@ -24,6 +24,7 @@
 #include "bvh_build_partition.h"
 #include "bvh_build_ref.h"
 #include "bvh_build_unordered.h"
+#include "bvh_depth.h"
 #include "raylab/accel/bvh.h"
 #include "raylab/simd/float4.h"
 
@@ -38,10 +39,7 @@ using bvh_build::load_hi;
 using bvh_build::load_lo;
 using simd::Float4;
 
-// Beyond this depth splits fall back to the object median, which halves the count each level:
-// a bound on depth that keeps traversal stacks (128 entries) from overflowing on pathological
-// inputs such as sizes spread over many orders of magnitude.
-constexpr int kMedianFallbackDepth = 64;
+using bvh_depth::kMedianFallbackDepth;  // the depth bound the traversal stacks are sized by
 // Nodes with at least this many references bin in parallel (the bins merge exactly, so the
 // result does not depend on how the range was cut).
 constexpr std::uint32_t kParallelBinning = 16384;

@@ -5,14 +5,12 @@
 #include <bit>
 #include <cstdint>
 
+#include "bvh_depth.h"
 #include "wide_bvh_leaf.h"
 
 namespace raylab {
 
-/// Each step pushes at most W - 1 entries and the binary tree is at most ~96 levels deep (the
-/// builder's median fallback bounds it), so a wide walk cannot push more than this.
-template <int W>
-inline constexpr int kWideStackSize = 96 * (W - 1) + 1;
+using bvh_depth::kWideStackSize;  // sized by the builder's depth bound
 
 /// Walks the subtree (or leaf) `start` for one ray, nearest child first, from
 /// distance `ray.tmin` up to `tmax`; on hits shrinks `tmax` and updates `best`. With kAnyHit
