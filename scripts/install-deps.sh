@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
+  ccache               # compiler cache: rebuilds in CI and in any clone reuse objects
   libgtest-dev libgmock-dev libbenchmark-dev
   libtbb-dev
   libcli11-dev nlohmann-json3-dev libfmt-dev

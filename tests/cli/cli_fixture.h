@@ -13,6 +13,7 @@
 #include <iterator>
 #include <string>
 #include <vector>
+#include "../test_paths.h"
 
 namespace raylab::cli_test {
 
@@ -58,7 +59,7 @@ class Cli : public ::testing::Test {
   CliResult run(const std::string& args) const {
     const fs::path so = work() / "stdout.txt", se = work() / "stderr.txt";
     const std::string cmd =
-        std::string("'") + RAYLAB_BINARY + "' " + args + " >'" + so.string() + "' 2>'" + se.string() + "'";
+        "'" + raylab::test::raylab_binary() + "' " + args + " >'" + so.string() + "' 2>'" + se.string() + "'";
     const int status = std::system(cmd.c_str());
     CliResult r;
     if (status != -1 && WIFEXITED(status)) r.code = WEXITSTATUS(status);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../test_paths.h"
 #include "cli_fixture.h"
 #include "raylab/io/image_io.h"
 
@@ -10,7 +11,7 @@ namespace {
 
 using namespace cli_test;
 
-const std::string kWhitted = "'" + std::string(RAYLAB_SOURCE_DIR) + "/scenes/whitted.json'";
+const std::string kWhitted = "'" + raylab::test::source_dir() + "/scenes/whitted.json'";
 
 // The table row of `name`: the line that starts with it.
 std::string row(const std::string& out, const std::string& name) {

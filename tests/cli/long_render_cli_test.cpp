@@ -14,6 +14,7 @@
 #include <random>
 #include <thread>
 
+#include "../test_paths.h"
 #include "cli_fixture.h"
 
 namespace raylab::cli_test {
@@ -29,7 +30,7 @@ class Background {
       ::dup2(fd, STDERR_FILENO);
       ::dup2(fd, STDOUT_FILENO);
       std::vector<char*> argv;
-      std::string binary = RAYLAB_BINARY;
+      std::string binary = raylab::test::raylab_binary();
       argv.push_back(binary.data());
       std::vector<std::string> copy = args;
       for (std::string& a : copy) argv.push_back(a.data());

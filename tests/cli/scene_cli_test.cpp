@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../test_paths.h"
 #include "cli_fixture.h"
 #include "raylab/io/image_io.h"
 #include "raylab/io/nff_loader.h"
@@ -18,7 +19,7 @@ namespace {
 
 using namespace cli_test;
 
-const std::string kScenes = std::string(RAYLAB_SOURCE_DIR) + "/scenes/";
+const std::string kScenes = raylab::test::source_dir() + "/scenes/";
 
 TEST_F(Cli, FlagsOverrideTheSceneFilesRenderSettings) {
   const CliResult r =

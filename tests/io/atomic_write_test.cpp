@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "../cli/cli_fixture.h"
+#include "../test_paths.h"
 #include "raylab/core/error.h"
 #include "raylab/io/atomic_file.h"
 
@@ -60,7 +61,7 @@ TEST_F(AtomicWrite, ARenderWhoseImageCannotBeWrittenKeepsThePreviousImage) {
   ASSERT_EQ(run("render demo --width 16 --height 8 -q -o " + image).code, 0);
   const std::string previous = read_text(image);
   // 64x64 floats need 48 KiB; the shell's file-size limit allows 8 KiB.
-  const std::string command = "ulimit -f 8; '" + std::string(RAYLAB_BINARY) +
+  const std::string command = "ulimit -f 8; '" + raylab::test::raylab_binary() +
                               "' render demo --width 64 --height 64 -q -o '" + image + "' 2>'" +
                               (work() / "err.txt").string() + "'";
   const int status = std::system(("bash -c \"" + command + "\"").c_str());

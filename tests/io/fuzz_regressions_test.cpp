@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "../test_paths.h"
 #include "raylab/core/error.h"
 #include "raylab/io/nff_loader.h"
 #include "raylab/io/off_loader.h"
@@ -38,7 +39,7 @@ void parse_as(const std::string& format, const std::string& bytes, const std::st
 }
 
 TEST(FuzzRegressions, EveryStoredInputLoadsOrIsRefusedCleanly) {
-  const fs::path root = fs::path(RAYLAB_SOURCE_DIR) / "tests" / "data" / "fuzz-regressions";
+  const fs::path root = fs::path(raylab::test::source_dir()) / "tests" / "data" / "fuzz-regressions";
   int replayed = 0;
   for (const auto& dir : fs::directory_iterator(root)) {
     for (const auto& file : fs::directory_iterator(dir.path())) {

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "../test_paths.h"
 #include "raylab/core/error.h"
 #include "raylab/io/nff_loader.h"
 #include "raylab/io/read_file.h"
@@ -22,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kSpdDir = std::string(RAYLAB_SOURCE_DIR) + "/../shared/spd-reference/";
+const std::string kSpdDir = raylab::test::source_dir() + "/../shared/spd-reference/";
 
 // A minimal valid view entity, for texts that need one.
 constexpr const char* kView = "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.5\nresolution 320 200\n";

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "../test_paths.h"
 #include "raylab/core/error.h"
 #include "raylab/io/nff_loader.h"
 #include "raylab/io/nff_writer.h"
@@ -23,7 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kSpdDir = std::string(RAYLAB_SOURCE_DIR) + "/../shared/spd-reference/";
+const std::string kSpdDir = raylab::test::source_dir() + "/../shared/spd-reference/";
 
 Scene reparse(const std::string& text) {
   Scene scene;

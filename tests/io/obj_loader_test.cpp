@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 
+#include "../test_paths.h"
 #include "raylab/core/error.h"
 #include "raylab/io/obj_loader.h"
 
@@ -69,7 +70,7 @@ void expect_vec(Vec3 got, Vec3 want) {
 }
 
 TEST_F(ObjLoader, StanfordBunnyHasAllItsTriangles) {
-  const std::string bunny = std::string(RAYLAB_SOURCE_DIR) + "/../shared/scenes/stanford-bunny.obj";
+  const std::string bunny = raylab::test::source_dir() + "/../shared/scenes/stanford-bunny.obj";
   if (!fs::exists(bunny)) GTEST_SKIP() << bunny << " is not present";
   const MeshLoadReport r = load_obj(bunny, m_scene, m_object);
   EXPECT_EQ(r.vertices, 35947u);

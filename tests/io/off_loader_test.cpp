@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "../test_paths.h"
 #include "parse_error_util.h"
 #include "raylab/core/error.h"
 #include "raylab/core/rng.h"
@@ -141,7 +142,7 @@ TEST(OffLoader, DegenerateFacesAreCountedAndDropped) {
 }
 
 TEST(OffLoader, ArmadilloHasAllItsTriangles) {
-  const std::string path = std::string(RAYLAB_SOURCE_DIR) + "/../shared/scenes/armadillo.off";
+  const std::string path = raylab::test::source_dir() + "/../shared/scenes/armadillo.off";
   if (!fs::exists(path)) GTEST_SKIP() << path << " is not present";
   Scene scene;
   const MeshLoadReport r = load_off(path, scene, 0);

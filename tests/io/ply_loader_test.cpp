@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "../test_paths.h"
 #include "parse_error_util.h"
 #include "raylab/core/error.h"
 #include "raylab/core/rng.h"
@@ -452,7 +453,7 @@ TEST(PlyLoader, StripIndexBelowMinusOneIsAnError) {
 }
 
 TEST(PlyLoader, IgeaStripsExpandToTheTrianglesTheyImply) {
-  const std::string path = std::string(RAYLAB_SOURCE_DIR) + "/../shared/scenes/igea.ply";
+  const std::string path = raylab::test::source_dir() + "/../shared/scenes/igea.ply";
   if (!fs::exists(path)) GTEST_SKIP() << path << " is not present";
   if (std::endian::native != std::endian::little) GTEST_SKIP() << "the check below reads the file as little-endian";
   // Read the file independently: the header is known (float x y z, one int/int strip list).

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../test_paths.h"
 #include "raylab/accel/factory.h"
 #include "raylab/core/error.h"
 #include "raylab/io/scene_json.h"
@@ -23,7 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kScenes = fs::path(RAYLAB_SOURCE_DIR) / "scenes";
+const fs::path kScenes = fs::path(raylab::test::source_dir()) / "scenes";
 
 // Parses `text` as a scene file in `dir`; returns the InputError message, or "" on success.
 std::string error_of(const std::string& text, const std::string& dir = ".", LoadOptions options = {}) {

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <typeinfo>
 
+#include "../test_paths.h"
 #include "raylab/accel/factory.h"
 #include "raylab/core/error.h"
 #include "raylab/core/rng.h"
@@ -21,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kShared = fs::path(RAYLAB_SOURCE_DIR) / ".." / "shared" / "scenes";
+const fs::path kShared = fs::path(raylab::test::source_dir()) / ".." / "shared" / "scenes";
 
 // Renders `scene` at 40 x 30, 1 spp; returns the fraction of pixels that differ from the background.
 double coverage(Scene& scene) {

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../test_paths.h"
 #include "raylab/accel/factory.h"
 #include "raylab/io/image_io.h"
 #include "raylab/io/scene_loader.h"
@@ -77,7 +78,7 @@ std::vector<char> read_bytes(const fs::path& p) {
 
 // Runs the raylab binary with `args`; returns its exit code (-1 if it did not exit normally).
 int run_raylab(const std::string& args, const fs::path& log) {
-  const std::string cmd = std::string("'") + RAYLAB_BINARY + "' " + args + " >'" + log.string() + "' 2>&1";
+  const std::string cmd = "'" + raylab::test::raylab_binary() + "' " + args + " >'" + log.string() + "' 2>&1";
   const int status = std::system(cmd.c_str());
   return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }

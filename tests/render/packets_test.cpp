@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "../test_paths.h"
 #include "raylab/accel/embree_accel.h"
 #include "raylab/accel/factory.h"
 #include "raylab/accel/two_level.h"
@@ -179,7 +180,7 @@ Scene many_lights_scene() {
 }
 
 Scene mesh_scene() {
-  Scene s = load_mesh(std::string(RAYLAB_SOURCE_DIR) + "/scenes/meshes/torus.obj");
+  Scene s = load_mesh(raylab::test::source_dir() + "/scenes/meshes/torus.obj");
   fit_camera_and_lights(s);
   return s;
 }
@@ -261,7 +262,7 @@ TEST(Packets, OtherSampleCountsSamplersAndFiltersMatchSingleRays) {
 
 // Instanced meshes (a two-level structure) are traced by the same packet path.
 TEST(Packets, InstancedSceneMatchesSingleRays) {
-  Scene scene = sized(load_scene(std::string(RAYLAB_SOURCE_DIR) + "/scenes/instances.json"), 20, 12);
+  Scene scene = sized(load_scene(raylab::test::source_dir() + "/scenes/instances.json"), 20, 12);
   scene.settings.spp = 1;
   SceneAccelOptions structure;
   structure.top = "bvh";

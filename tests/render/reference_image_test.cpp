@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../test_paths.h"
 #include "raylab/accel/factory.h"
 #include "raylab/io/image_io.h"
 #include "raylab/render/renderer.h"
@@ -31,7 +32,7 @@ Film render_demo(int max_depth) {
 }
 
 const Film& reference() {
-  static const Film film = read_image(RAYLAB_SOURCE_DIR "/tests/data/demo_200x112_4spp.png");
+  static const Film film = read_image(raylab::test::source_dir() + "/tests/data/demo_200x112_4spp.png");
   return film;
 }
 

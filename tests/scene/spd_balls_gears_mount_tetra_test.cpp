@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "../test_paths.h"
 #include "raylab/core/error.h"
 #include "raylab/io/nff_loader.h"
 #include "raylab/scene/spd.h"
@@ -24,7 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kReferenceDir = RAYLAB_SOURCE_DIR "/../shared/spd-reference/";
+const std::string kReferenceDir = raylab::test::source_dir() + "/../shared/spd-reference/";
 
 // The reference prints with %g (6 significant digits), so values agree to about 5e-6 relative;
 // coordinates that are zero in one and rounding noise (1e-17) in the other need the absolute term.

@@ -16,6 +16,7 @@
 #include <string_view>
 #include <utility>
 
+#include "../test_paths.h"
 #include "raylab/core/error.h"
 #include "raylab/io/nff_loader.h"
 #include "raylab/scene/spd.h"
@@ -23,7 +24,7 @@
 namespace raylab {
 namespace {
 
-const std::string kReferenceDir = RAYLAB_SOURCE_DIR "/../shared/spd-reference/";
+const std::string kReferenceDir = raylab::test::source_dir() + "/../shared/spd-reference/";
 
 // The reference prints %g (6 significant digits), so values agree to 5e-6 relative; the absolute
 // part covers values that are rounding noise of zero there (2.22045e-16 for 0).
