@@ -7,6 +7,7 @@
 #include <string>
 
 #include "commands.h"
+#include "raylab/core/stopwatch.h"
 #include "raylab/io/scene_loader.h"
 
 namespace raylab::cli {
@@ -38,7 +39,7 @@ int run(const InfoArgs& args) {
   load.allow_outside_paths = args.allow_outside_paths;
   const auto start = std::chrono::steady_clock::now();
   const Scene scene = load_scene(args.scene, load);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = seconds_since(start);
   for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
 
   const Geometry& g = scene.geometry;

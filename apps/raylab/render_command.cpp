@@ -16,6 +16,7 @@
 #include "commands.h"
 #include "raylab/accel/factory.h"
 #include "raylab/accel/two_level.h"
+#include "raylab/core/byte_size.h"
 #include "raylab/core/error.h"
 #include "raylab/core/interrupt.h"
 #include "raylab/dist/launcher.h"

@@ -12,6 +12,7 @@
 #include "raylab/core/error.h"
 #include "raylab/core/index_ranges.h"
 #include "raylab/core/interrupt.h"
+#include "raylab/core/stopwatch.h"
 #include "raylab/dist/distributed_frames.h"
 #include "raylab/dist/launcher.h"
 #include "raylab/dist/local_channel.h"
@@ -127,7 +128,7 @@ int run_frames(const RenderArgs& given) {
   } catch (const std::exception& e) {
     return fail_outside_protocol(*channel, e);
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = seconds_since(start);
   if (!root) {
     if (result.outcome == dist::DistributedOutcome::kComplete) return 0;
     return interrupt_signal() != 0 ? interrupt_exit_status(interrupt_signal()) : 1;

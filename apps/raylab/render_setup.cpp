@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "raylab/accel/two_level.h"
+#include "raylab/core/byte_size.h"
 #include "raylab/core/error.h"
 #include "raylab/core/hash64.h"
 #include "raylab/core/index_ranges.h"
@@ -73,38 +74,6 @@ bool wants_samples_aov(const RenderArgs& args) {
 }
 
 }  // namespace
-
-std::string human_bytes(std::size_t bytes) {
-  if (bytes < 1024) return fmt::format("{} B", bytes);
-  if (bytes < 1024 * 1024) return fmt::format("{:.1f} KiB", bytes / 1024.0);
-  if (bytes < std::size_t(1) << 30) return fmt::format("{:.1f} MiB", bytes / (1024.0 * 1024.0));
-  return fmt::format("{:.1f} GiB", bytes / (1024.0 * 1024.0 * 1024.0));
-}
-
-std::optional<std::size_t> parse_byte_size(const std::string& text) {
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-  const std::string unit = text.substr(used);
-  double scale = 1;
-  if (unit == "K" || unit == "k" || unit == "KiB")
-    scale = 1024.0;
-  else if (unit == "M" || unit == "MiB")
-    scale = 1024.0 * 1024;
-  else if (unit == "G" || unit == "GiB")
-    scale = 1024.0 * 1024 * 1024;
-  else if (unit == "T" || unit == "TiB")
-    scale = 1024.0 * 1024 * 1024 * 1024;
-  else if (!unit.empty() && unit != "B")
-    return std::nullopt;
-  const double bytes = value * scale;
-  if (!(bytes > 0) || bytes > 1e18) return std::nullopt;
-  return static_cast<std::size_t>(bytes);
-}
 
 void print_stats(const RenderStats& s, const AccelInfo& info, double seconds) {
   fmt::print("{:<12}{:>14}{:>14}\n", "rays", "cast", "hit");

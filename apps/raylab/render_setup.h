@@ -100,17 +100,10 @@ void print_warnings(const RenderResult& result);
 /// Removes the checkpoint of a render that has completed (when it saved checkpoints).
 void remove_finished_checkpoint(const RenderSetup& setup);
 
-/// "12.3 MiB".
-std::string human_bytes(std::size_t bytes);
-
 /// Prints ray counts, traversal work, the accelerator and timings (--stats).
 void print_stats(const RenderStats& stats, const AccelInfo& info, double seconds);
 
 /// The one-line description of the sampling for the summary ("16 spp jittered").
 std::string sampling_summary(const RenderSetup& setup, const RenderResult& result);
-
-/// Bytes in a size such as "512M", "8G", "1.5T" or "1000000" (powers of 1024); nullopt when it
-/// is not one.
-std::optional<std::size_t> parse_byte_size(const std::string& text);
 
 }  // namespace raylab::cli

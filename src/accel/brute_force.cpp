@@ -1,4 +1,5 @@
 #include "raylab/accel/brute_force.h"
+#include "raylab/core/stopwatch.h"
 
 #include <algorithm>
 #include <chrono>
@@ -13,7 +14,7 @@ BruteForce::BruteForce(const Geometry& geometry, std::span<const std::uint32_t> 
   // Ascending ids, so that an any-hit query finds the same first hit whatever order was given.
   std::sort(m_ids.begin(), m_ids.end());
   for (std::uint32_t id : m_ids) m_bounds.extend(geometry.bounds(id));
-  m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m_build_seconds = seconds_since(start);
 }
 
 template <bool kCount>

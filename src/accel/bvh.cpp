@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "raylab/accel/bvh.h"
+#include "raylab/core/stopwatch.h"
 
 #include "bvh_depth.h"
 #include "traversal_common.h"
@@ -70,7 +71,7 @@ Bvh::Bvh(const Geometry& geometry, std::span<const std::uint32_t> ids, const Bvh
   m_tree = build_bvh(geometry, ids, config);
   m_triangle_count = static_cast<std::uint32_t>(geometry.triangles.size());
   m_leaf_triangles = triangles_in_leaf_order(geometry, m_tree.prim_ids);
-  m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m_build_seconds = seconds_since(start);
 }
 
 Box3 Bvh::bounds() const {

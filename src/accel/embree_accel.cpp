@@ -2,6 +2,7 @@
 
 #include "raylab/accel/brute_force.h"
 #include "raylab/core/error.h"
+#include "raylab/core/stopwatch.h"
 
 #if defined(RAYLAB_HAVE_EMBREE)
 #include <embree3/rtcore.h>
@@ -302,7 +303,7 @@ EmbreeAccel::EmbreeAccel(const Geometry& geometry, std::span<const std::uint32_t
     }
     m_embree_bytes = g_device_bytes.load() - before;
   }
-  m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m_build_seconds = seconds_since(start);
 }
 
 void EmbreeAccel::build() {

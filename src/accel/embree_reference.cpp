@@ -1,6 +1,7 @@
 #include "raylab/accel/embree_reference.h"
 
 #include "raylab/core/error.h"
+#include "raylab/core/stopwatch.h"
 
 #if defined(RAYLAB_HAVE_EMBREE)
 #include <embree3/rtcore.h>
@@ -237,7 +238,7 @@ double EmbreeReference::rebuild() {
   const long long before = m->allocated.load();  // after the release: only this build counts
   const auto start = std::chrono::steady_clock::now();
   m->scene = m->build(RTC_SCENE_FLAG_NONE);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = seconds_since(start);
   m->scene_bytes = m->allocated.load() - before;
   return seconds;
 }

@@ -19,6 +19,7 @@
 // (either is right: the build's margin puts what lies on the plane in both).
 
 #include "raylab/accel/octree.h"
+#include "raylab/core/stopwatch.h"
 
 #include <algorithm>
 #include <chrono>
@@ -71,7 +72,7 @@ Octree::Octree(const Geometry& geometry, std::span<const std::uint32_t> ids, con
   m_tree = build_octree(geometry, ids, m_config);
   m_mailboxes = std::make_unique<Mailboxes>(static_cast<std::uint32_t>(m_tree.ids.size()));
   m_triangle_count = static_cast<std::uint32_t>(geometry.triangles.size());
-  m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m_build_seconds = seconds_since(start);
 }
 
 Octree::~Octree() = default;

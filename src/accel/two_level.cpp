@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "raylab/core/error.h"
+#include "raylab/core/stopwatch.h"
 #include "traversal_common.h"
 
 namespace raylab {
@@ -253,7 +254,7 @@ class TwoLevel final : public Accelerator {
     m_top_accel = make_accelerator(m_options.top, m_top, top_ids, m_options.config);
     m_primitive_count = flat.size();
     for (const Instance& inst : instances) m_primitive_count += prototypes[inst.prototype].size();
-    m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    m_build_seconds = seconds_since(start);
   }
 
   Box3 bounds() const override { return m_top_accel->bounds(); }

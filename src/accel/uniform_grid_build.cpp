@@ -17,6 +17,7 @@
 #include "mailbox.h"
 #include "raylab/accel/uniform_grid.h"
 #include "raylab/core/error.h"
+#include "raylab/core/stopwatch.h"
 #include "raylab/geometry/overlap.h"
 
 namespace raylab {
@@ -126,7 +127,7 @@ UniformGrid::UniformGrid(const Geometry& geometry, std::span<const std::uint32_t
   }
   const auto start = std::chrono::steady_clock::now();
   build(resolution);
-  m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m_build_seconds = seconds_since(start);
 }
 
 UniformGrid::~UniformGrid() = default;

@@ -1,6 +1,7 @@
 // The wide BVH accelerator: build, and the single-ray traversal ordered by distance.
 
 #include "raylab/accel/wide_bvh.h"
+#include "raylab/core/stopwatch.h"
 
 #include <algorithm>
 #include <bit>
@@ -29,7 +30,7 @@ WideBvh<W>::WideBvh(const Geometry& geometry, std::span<const std::uint32_t> ids
     const BvhNode& root = tree.nodes[0];
     m_bounds = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
   }
-  m_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m_build_seconds = seconds_since(start);
 }
 
 template <int W>

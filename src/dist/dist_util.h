@@ -9,13 +9,11 @@
 #include <vector>
 
 #include "raylab/core/index_ranges.h"
+#include "raylab/core/stopwatch.h"
 
 namespace raylab::dist {
 
-using Clock = std::chrono::steady_clock;
-
-/// Seconds from `t` to now.
-inline double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+using Clock = SteadyClock;
 
 /// Longest wait for a message before a message loop looks around again (signals, timeouts).
 inline constexpr double kPollSeconds = 0.02;

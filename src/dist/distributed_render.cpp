@@ -1,4 +1,5 @@
 #include "raylab/dist/distributed_render.h"
+#include "raylab/core/stopwatch.h"
 
 #include <algorithm>
 #include <chrono>
@@ -22,7 +23,7 @@ void call_off(Channel& channel) {
 void report_failure(Channel& channel, const std::string& message, double seconds) {
   channel.send(0, protocol::kFailed, protocol::encode_text(message));
   const auto start = std::chrono::steady_clock::now();
-  while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds) {
+  while (seconds_since(start) < seconds) {
     std::optional<Message> m = channel.receive(0.05);
     if (m && m->tag == protocol::kAbort) break;
   }

@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "raylab/core/error.h"
+#include "raylab/core/hash64.h"
 #include "raylab/io/atomic_file.h"
 #include "raylab/io/file_extension.h"
 #include "raylab/io/image_io.h"
@@ -59,7 +60,7 @@ std::string default_reference_cache_dir() {
 std::string scene_source_key(const std::string& source) {
   std::error_code ec;
   if (!fs::is_regular_file(source, ec)) return source;
-  return fmt::format("{} fnv1a:{:016x}", source, fnv1a64(read_file(source)));
+  return fmt::format("{} hash64:{:016x}", source, Hash64::of(read_file(source)));
 }
 
 Film load_reference_file(const std::string& path) {

@@ -15,7 +15,9 @@
 #include "json_text.h"
 #include "median.h"
 #include "raylab/accel/factory.h"
+#include "raylab/core/byte_size.h"
 #include "raylab/core/error.h"
+#include "raylab/core/stopwatch.h"
 
 namespace raylab {
 namespace {
@@ -23,7 +25,7 @@ namespace {
 using detail::json_string;
 using detail::median;
 
-using Clock = std::chrono::steady_clock;
+using Clock = SteadyClock;
 
 // A structure that builds faster than this is built again (up to kMaxBuilds times) and the
 // median reported: one build of a few milliseconds is mostly noise on a shared machine.
@@ -33,8 +35,6 @@ constexpr int kMaxBuilds = 5;
 constexpr double kCalibrationSeconds = 0.02;
 // Rays handed to one task at a time: enough to amortise scheduling, small enough to balance.
 constexpr std::size_t kGrain = 512;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 void progress(const CompareOptions& o, const std::string& line) {
   if (o.on_progress) o.on_progress(line);
@@ -241,16 +241,6 @@ CompareResult run_comparison(const Scene& scene, const CompareOptions& options, 
     }
   }
   return result;
-}
-
-// Bytes in the unit that keeps three or four digits.
-std::string human_bytes(std::size_t bytes) {
-  if (bytes < 1024) return fmt::format("{} B", bytes);
-  if (bytes < 1024 * 1024) return fmt::format("{:.1f} KiB", static_cast<double>(bytes) / 1024.0);
-  if (bytes < std::size_t{1024} * 1024 * 1024) {
-    return fmt::format("{:.1f} MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
-  }
-  return fmt::format("{:.2f} GiB", static_cast<double>(bytes) / (1024.0 * 1024.0 * 1024.0));
 }
 
 std::string agreement_text(const AccelMeasure& m) {

@@ -2,6 +2,7 @@
 // table and JSON are in bench_format.cpp.
 
 #include "raylab/render/bench.h"
+#include "raylab/core/stopwatch.h"
 
 #include <fmt/format.h>
 #include <tbb/global_control.h>
@@ -52,7 +53,7 @@ template <class Fn>
 double seconds_of(const Fn& fn) {
   const auto start = std::chrono::steady_clock::now();
   fn();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return seconds_since(start);
 }
 
 // Closest hits by our structure, one ray or one packet of 16 at a time.

@@ -1,4 +1,5 @@
 #include "raylab/render/progress.h"
+#include "raylab/core/stopwatch.h"
 
 #include <cmath>
 
@@ -47,7 +48,7 @@ void ProgressBar::draw(int done, int total, double elapsed) {
 
 void ProgressBar::finish(const std::string& summary) {
   std::lock_guard lock(m_mutex);
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+  const double elapsed = seconds_since(m_start);
   if (m_interactive && m_drawn) std::fprintf(m_out, "\r\x1b[K");
   std::fprintf(m_out, "%s: %s in %s\n", m_label.c_str(), summary.c_str(), format_duration(elapsed).c_str());
   std::fflush(m_out);

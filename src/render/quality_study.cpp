@@ -12,6 +12,7 @@
 #include "json_text.h"
 #include "median.h"
 #include "raylab/core/error.h"
+#include "raylab/core/hash64.h"
 #include "raylab/render/adaptive.h"
 #include "raylab/render/image_metrics.h"
 #include "raylab/render/renderer.h"
@@ -174,16 +175,8 @@ std::string reference_key_text(const RenderSettings& s, const QualityOptions& o)
       r.ambient.x, r.ambient.y, r.ambient.z, r.sampler, r.spp, r.seed);
 }
 
-std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t hash) {
-  for (const char c : bytes) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 0x100000001b3ull;
-  }
-  return hash;
-}
-
 std::string reference_file_name(const RenderSettings& s, const QualityOptions& o) {
-  return fmt::format("reference-{:016x}.exr", fnv1a64(reference_key_text(s, o)));
+  return fmt::format("reference-{:016x}.exr", Hash64::of(reference_key_text(s, o)));
 }
 
 QualityResult run_quality_study(const Scene& scene, const Accelerator& accel, const Film& reference,

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "raylab/core/rng.h"
+#include "raylab/core/stopwatch.h"
 #include "raylab/render/camera.h"
 #include "raylab/render/renderer.h"
 #include "raylab/render/whitted.h"
@@ -121,7 +122,7 @@ class RenderWorkers {
 inline RenderResult finish_render(RenderWorkers& workers, std::chrono::steady_clock::time_point start,
                                   std::vector<std::uint32_t> samples_per_pixel) {
   RenderResult result;
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.seconds = seconds_since(start);
   result.stats = workers.merged_stats();
   result.samples_per_pixel = std::move(samples_per_pixel);
   return result;

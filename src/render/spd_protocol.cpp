@@ -1,4 +1,5 @@
 #include "raylab/render/spd_protocol.h"
+#include "raylab/core/stopwatch.h"
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/info.h>
@@ -81,7 +82,7 @@ SpdProtocolResult render_spd_protocol(Scene& scene, const Accelerator& accel, Fi
   });
 
   SpdProtocolResult result;
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.seconds = seconds_since(start);
   for (int y = 0; y < n; ++y) {
     for (int x = 0; x < n; ++x) {
       const auto c = [&](int dx, int dy) { return corner[static_cast<std::size_t>(y + dy) * corners + x + dx]; };

@@ -7,6 +7,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <string_view>
 
 namespace raylab {
 
@@ -28,6 +29,13 @@ class Hash64 {
     std::uint64_t tail = 0;
     if (n > 0) std::memcpy(&tail, p, n);  // p may be null when nothing is left (an empty array)
     word(tail);
+  }
+  /// The hash of one byte string: stable across runs, builds and machines, so fit for names of
+  /// cache files and keys written to disk.
+  static std::uint64_t of(std::string_view text) {
+    Hash64 h;
+    h.bytes(text.data(), text.size());
+    return h.value();
   }
   /// The hash of everything added so far.
   std::uint64_t value() const { return m_state; }

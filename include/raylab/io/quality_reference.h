@@ -19,7 +19,7 @@ namespace raylab {
 std::string default_reference_cache_dir();
 
 /// A key naming a scene source for the reference cache: `source` itself, followed by
-/// " fnv1a:" and 16 hex digits of the hash of the file's bytes when `source` is a regular file.
+/// " hash64:" and 16 hex digits of Hash64::of of the file's bytes when `source` is a regular file.
 /// Only the named file is hashed: a mesh that a scene file references can change unseen (then
 /// delete the cached reference or pass --reference); built-in scenes and generators are keyed
 /// by name (their code changing bumps kReferenceFormatVersion).

@@ -124,12 +124,9 @@ Film render_reference(const Scene& scene, const Accelerator& accel, const Qualit
 /// image size, filter and radius, max depth, background, reference spp and seed.
 std::string reference_key_text(const RenderSettings& scene_settings, const QualityOptions& options);
 
-/// The cache file name of an auto reference: "reference-" + 16 hex digits of the FNV-1a hash
-/// of reference_key_text + ".exr".
+/// The cache file name of an auto reference: "reference-" + 16 hex digits of Hash64::of
+/// reference_key_text + ".exr".
 std::string reference_file_name(const RenderSettings& scene_settings, const QualityOptions& options);
-
-/// FNV-1a, 64 bits: the hash of cache keys and scene files (stable across runs and machines).
-std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t seed = 0xcbf29ce484222325ull);
 
 /// Runs the study on `scene` (its settings give the size, filter, depth and adaptive
 /// parameters; sampler, spp and seed are set per render) against `reference`. For each sampler
