@@ -17,44 +17,37 @@ BruteForce::BruteForce(const Geometry& geometry, std::span<const std::uint32_t> 
   m_build_seconds = seconds_since(start);
 }
 
-template <bool kCount>
-bool BruteForce::intersect_impl(Ray& ray, Hit& hit, TraversalStats* stats) const {
-  const WatertightRay wr(ray);
-  bool found = false;
-  const auto n = static_cast<std::uint32_t>(m_ids.size());
-  for (std::uint32_t id : m_ids) found |= m_geometry.intersect(id, wr, ray, hit);
-  if constexpr (kCount) {
-    stats->prim_tests += n;
-    stats->hits += found ? 1 : 0;
-  }
-  return found;
-}
-
-template <bool kCount>
-bool BruteForce::occluded_impl(const Ray& ray, TraversalStats* stats) const {
+// Through Geometry::intersect for every kind, not the structures' shared leaf test: the
+// reference stays independent of the code it checks.
+template <bool kAnyHit, bool kCount>
+bool BruteForce::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   const WatertightRay wr(ray);
   const auto n = static_cast<std::uint32_t>(m_ids.size());
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (m_geometry.occluded(m_ids[i], wr, ray)) {
-      if constexpr (kCount) {
-        stats->prim_tests += i + 1;
-        ++stats->hits;
+  if constexpr (kAnyHit) {
+    for (std::uint32_t i = 0; i < n; ++i) {
+      if (m_geometry.occluded(m_ids[i], wr, ray)) {
+        if constexpr (kCount) {
+          stats->prim_tests += i + 1;
+          ++stats->hits;
+        }
+        return true;
       }
-      return true;
     }
+    if constexpr (kCount) stats->prim_tests += n;
+    return false;
+  } else {
+    bool found = false;
+    for (std::uint32_t id : m_ids) found |= m_geometry.intersect(id, wr, ray, hit);
+    if constexpr (kCount) {
+      stats->prim_tests += n;
+      stats->hits += found ? 1 : 0;
+    }
+    return found;
   }
-  if constexpr (kCount) stats->prim_tests += n;
-  return false;
 }
 
-bool BruteForce::intersect(Ray& ray, Hit& hit) const { return intersect_impl<false>(ray, hit, nullptr); }
-bool BruteForce::occluded(const Ray& ray) const { return occluded_impl<false>(ray, nullptr); }
-bool BruteForce::intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const {
-  return intersect_impl<true>(ray, hit, &stats);
-}
-bool BruteForce::occluded_counted(const Ray& ray, TraversalStats& stats) const {
-  return occluded_impl<true>(ray, &stats);
-}
+// The four entry points, compiled here where the kernel is defined.
+template class TraversalAccelerator<BruteForce>;
 
 AccelInfo BruteForce::info() const {
   AccelInfo info;

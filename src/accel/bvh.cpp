@@ -7,6 +7,7 @@
 #include "raylab/core/stopwatch.h"
 
 #include "bvh_depth.h"
+#include "leaf_test.h"
 #include "traversal_common.h"
 
 namespace raylab {
@@ -93,11 +94,12 @@ bool Bvh::traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, Traversa
   // Everything the loop touches lives in locals: stores through `ray` and `hit` inside the loop
   // would force the compiler to reload node and array pointers after each one (they may alias).
   const BvhNode* const nodes = m_tree.nodes.data();
-  const LeafPrimitives leaf{m_tree.prim_ids.data(), m_leaf_triangles.data(), m_triangle_count, &m_geometry};
+  const SlotTriangles leaf{m_tree.prim_ids.data(), m_leaf_triangles.data(), m_triangle_count, &m_geometry};
+  TestEverySlot every_slot;
   const float tmin = ray.tmin;
   float tmax = ray.tmax;
   Hit best = hit;
-  std::uint64_t nodes_visited = 1, prim_tests = 0;
+  TraversalCounters counters{.nodes_visited = 1};
 
   float t_root = 0.f;
   bool found = false;
@@ -110,16 +112,15 @@ bool Bvh::traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, Traversa
     for (;;) {
       const BvhNode& node = nodes[current];
       if (node.is_leaf()) {
-        if (intersect_leaf<kAnyHit, kCount>(leaf, node.first, node.count, tri_ray, ray, tmin, tmax, best, prim_tests)) {
+        if (intersect_references<kAnyHit, kCount>(leaf, node.first, node.first + node.count, SlotIsReference{},
+                                                  every_slot, tri_ray, ray, tmin, tmax, best, counters)) {
           found = true;
-          if constexpr (kAnyHit) {
-            return finish_traversal<kCount>(true, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
-          }
+          if constexpr (kAnyHit) return finish_traversal<kCount>(true, tmax, best, counters, ray, hit, stats);
         }
       } else {
         const std::uint32_t left = node.first;
         float t_left = 0.f, t_right = 0.f;
-        if constexpr (kCount) nodes_visited += 2;
+        if constexpr (kCount) counters.nodes_visited += 2;
         // Both children are tested one after the other in scalar code. A two-box SIMD test
         // (both 32-byte siblings in one 256-bit pair of loads) was measured slower: this loop is
         // bound by the latency from node load to branch, and the lane shuffles lengthen it.
@@ -146,27 +147,11 @@ bool Bvh::traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, Traversa
       if (!stack.template pop<kAnyHit>(tmax, current)) break;
     }
   }
-  return finish_traversal<kCount>(found, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
+  return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
 }
 
-template <bool kCount>
-bool Bvh::intersect_impl(Ray& ray, Hit& hit, TraversalStats* stats) const {
-  return traverse<false, kCount>(ray, hit, stats);
-}
-
-template <bool kCount>
-bool Bvh::occluded_impl(const Ray& ray, TraversalStats* stats) const {
-  Ray probe = ray;
-  Hit scratch;
-  return traverse<true, kCount>(probe, scratch, stats);
-}
-
-bool Bvh::intersect(Ray& ray, Hit& hit) const { return intersect_impl<false>(ray, hit, nullptr); }
-bool Bvh::occluded(const Ray& ray) const { return occluded_impl<false>(ray, nullptr); }
-bool Bvh::intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const {
-  return intersect_impl<true>(ray, hit, &stats);
-}
-bool Bvh::occluded_counted(const Ray& ray, TraversalStats& stats) const { return occluded_impl<true>(ray, &stats); }
+// The four entry points, compiled here where the kernel is defined.
+template class TraversalAccelerator<Bvh>;
 
 AccelInfo Bvh::info() const {
   AccelInfo info;

@@ -27,6 +27,7 @@
 #include <limits>
 #include <optional>
 
+#include "leaf_test.h"
 #include "mailbox.h"
 #include "traversal_common.h"
 
@@ -59,6 +60,13 @@ struct Frame {
   int child;                  // the child being visited, in the mirrored numbering
 };
 
+// The ray's mailbox stamp, or none when mailboxing is off (then every reference is tested). The
+// stamp is taken only when the ray enters the tree: rays that miss never touch the mailboxes.
+struct OptionalMailbox {
+  std::optional<Mailboxes::RayStamp> stamp;
+  bool first_visit(std::uint32_t slot) { return !stamp || stamp->first_visit(slot); }
+};
+
 }  // namespace
 
 Octree::Octree(const Geometry& geometry, const OctreeConfig& config)
@@ -71,7 +79,6 @@ Octree::Octree(const Geometry& geometry, std::span<const std::uint32_t> ids, con
   m_config.max_depth = std::clamp(m_config.max_depth, 0, kOctreeDepthLimit);
   m_tree = build_octree(geometry, ids, m_config);
   m_mailboxes = std::make_unique<Mailboxes>(static_cast<std::uint32_t>(m_tree.ids.size()));
-  m_triangle_count = static_cast<std::uint32_t>(geometry.triangles.size());
   m_build_seconds = seconds_since(start);
 }
 
@@ -79,12 +86,12 @@ Octree::~Octree() = default;
 
 template <bool kAnyHit, bool kCount>
 bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
-  std::uint64_t nodes_visited = 0, prim_tests = 0;
+  TraversalCounters counters;
   const float tmin = ray.tmin;
   float tmax = ray.tmax;
   Hit best = hit;
   bool found = false;
-  if (m_tree.nodes.empty()) return finish_traversal<kCount>(false, tmax, best, 0, 0, ray, hit, stats);
+  if (m_tree.nodes.empty()) return finish_traversal<kCount>(false, tmax, best, {}, ray, hit, stats);
 
   const int octant = direction_octant(ray.direction);
   const Vec3 o = ray.origin;
@@ -93,41 +100,18 @@ bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   const WatertightRay tri_ray(ray);
   const OctreeNode* const nodes = m_tree.nodes.data();
   const std::uint32_t* const refs = m_tree.refs.data();
-  const std::uint32_t* const ids = m_tree.ids.data();
-  const Triangle* const triangles = m_geometry.triangles.data();
-  const bool mailbox = m_config.mailbox;
-  std::optional<Mailboxes::RayStamp> stamp;  // a thread-local lookup per ray: only when mailboxing
+  const GeometryPrimitives prims(m_tree.ids.data(), m_geometry);
+  OptionalMailbox mailbox;
 
   // Tests the primitives of leaf `node` against the whole remaining ray (not just the cell's
   // stretch of it), so a hit found here counts wherever it lies. True on an any-hit.
   auto test_leaf = [&](const OctreeNode& node) {
-    const std::uint32_t end = node.first + node.count;
-    for (std::uint32_t r = node.first; r < end; ++r) {
-      const std::uint32_t index = refs[r];
-      if (mailbox && !stamp->first_visit(index)) continue;
-      const std::uint32_t id = ids[index];
-      if constexpr (kCount) ++prim_tests;
-      if (id < m_triangle_count) {
-        float t, u, v;
-        if (intersect_triangle(triangles[id], tri_ray, tmin, kAnyHit ? tmax : best.tie_limit(id, tmax), t, u, v)) {
-          found = true;
-          if constexpr (kAnyHit) return true;
-          tmax = t;
-          best = {t, id, u, v};
-        }
-      } else {
-        Ray probe = ray;
-        probe.tmin = tmin;
-        probe.tmax = tmax;
-        if constexpr (kAnyHit) {
-          if (m_geometry.occluded(id, tri_ray, probe)) return found = true;
-        } else if (m_geometry.intersect(id, tri_ray, probe, best)) {
-          found = true;
-          tmax = probe.tmax;
-        }
-      }
+    if (!intersect_references<kAnyHit, kCount>(prims, node.first, node.first + node.count, SlotFromList{refs}, mailbox,
+                                               tri_ray, ray, tmin, tmax, best, counters)) {
+      return false;
     }
-    return false;
+    found = true;
+    return kAnyHit;
   };
 
   // Crossing of lattice plane `step` along axis i. Usually step * k + b, an affine function of
@@ -166,13 +150,13 @@ bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   // Where the ray is now: it enters each cell at the parameter it left the previous one.
   float t_cur = t_enter > tmin ? t_enter : tmin;
   if (!(t_cur <= (t_leave < limit ? t_leave : limit))) {
-    return finish_traversal<kCount>(false, tmax, best, 0, 0, ray, hit, stats);
+    return finish_traversal<kCount>(false, tmax, best, {}, ray, hit, stats);
   }
-  if (mailbox) stamp.emplace(m_mailboxes->begin_ray());
-  if constexpr (kCount) ++nodes_visited;
+  if (m_config.mailbox) mailbox.stamp.emplace(m_mailboxes->begin_ray());
+  if constexpr (kCount) ++counters.nodes_visited;
   if (nodes[0].is_leaf()) {
     test_leaf(nodes[0]);
-    return finish_traversal<kCount>(found, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
+    return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
   }
 
   // Completes frame `g` for interior node `node` (its far crossings and lattice corner are set):
@@ -191,7 +175,7 @@ bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
     // Visit the current child of the innermost open node.
     const int actual = f->child ^ octant;
     const OctreeNode node = nodes[f->first_child + static_cast<std::uint32_t>(actual)];
-    if constexpr (kCount) ++nodes_visited;
+    if constexpr (kCount) ++counters.nodes_visited;
     if (!node.is_leaf()) {
       Frame& g = f[1];
       for (int i = 0; i < 3; ++i) {
@@ -203,7 +187,7 @@ bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
       continue;
     }
     if (node.count != 0 && test_leaf(node)) {
-      return finish_traversal<kCount>(true, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
+      return finish_traversal<kCount>(true, tmax, best, counters, ray, hit, stats);
     }
 
     // Step to the next cell along the ray: leave the current child through its nearest exit
@@ -217,7 +201,7 @@ bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
       // Cells beyond the closest hit cannot hold a closer one; an exit at infinity means the ray
       // never leaves (a zero direction).
       if (!(t_exit <= visit_limit(tmax)) || t_exit == kInf) {
-        return finish_traversal<kCount>(found, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
+        return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
       }
       // Every axis that reaches the exit at once (a ray through an edge or a corner).
       const int crossed = (ex == t_exit ? 1 : 0) | (ey == t_exit ? 2 : 0) | (ez == t_exit ? 4 : 0);
@@ -227,34 +211,19 @@ bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
         // Empty leaves hold nothing to test: step on through them without a visit of their own.
         if (const OctreeNode& next = nodes[f->first_child + static_cast<std::uint32_t>(f->child ^ octant)];
             next.count == 0) {
-          if constexpr (kCount) ++nodes_visited;
+          if constexpr (kCount) ++counters.nodes_visited;
           continue;
         }
         break;
       }
-      if (f == stack) return finish_traversal<kCount>(found, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
+      if (f == stack) return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
       --f;
     }
   }
 }
 
-bool Octree::intersect(Ray& ray, Hit& hit) const { return traverse<false, false>(ray, hit, nullptr); }
-
-bool Octree::occluded(const Ray& ray) const {
-  Ray probe = ray;
-  Hit scratch;
-  return traverse<true, false>(probe, scratch, nullptr);
-}
-
-bool Octree::intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const {
-  return traverse<false, true>(ray, hit, &stats);
-}
-
-bool Octree::occluded_counted(const Ray& ray, TraversalStats& stats) const {
-  Ray probe = ray;
-  Hit scratch;
-  return traverse<true, true>(probe, scratch, &stats);
-}
+// The four entry points, compiled here where the kernel is defined.
+template class TraversalAccelerator<Octree>;
 
 AccelInfo Octree::info() const {
   AccelInfo info;

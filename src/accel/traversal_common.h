@@ -1,6 +1,7 @@
 #pragma once
-// Pieces shared by the BVH traversals (internal to src/accel): the leaf loop, the dispatch on
-// the ray's direction octant, and handing the result back.
+// Pieces shared by the traversals (internal to src/accel): the work counters, the dispatch on
+// the ray's direction octant, the stack of subtrees and handing the result back. The leaf test
+// is in leaf_test.h.
 
 #include <cmath>
 #include <cstdint>
@@ -12,60 +13,12 @@
 
 namespace raylab {
 
-/// What a leaf test needs: references in leaf order, the triangles copied in the same order,
-/// and the geometry for the other shapes.
-struct LeafPrimitives {
-  const std::uint32_t* prim_ids;
-  const Triangle* triangles;     ///< parallel to prim_ids; valid where prim_ids[i] < triangle_count
-  std::uint32_t triangle_count;  ///< primitive ids below this are triangles
-  const Geometry* geometry;
+/// The work a counted query does, added up during the walk and handed to TraversalStats at the
+/// end (a structure's uncounted kernels never touch it).
+struct TraversalCounters {
+  std::uint64_t nodes_visited = 0;  ///< nodes, cells or box tests, as each structure defines it
+  std::uint64_t prim_tests = 0;     ///< primitive tests run
 };
-
-/// Tests primitive (or group) `id`, not a triangle, through the Geometry against `ray` restricted
-/// to [tmin, tmax). Closest hit: on a hit shrinks `tmax` and updates `best`. With kAnyHit only
-/// answers whether anything is hit (a group, a whole sub-structure, may stop at its first hit).
-template <bool kAnyHit>
-inline bool intersect_other(const Geometry& geometry, std::uint32_t id, const WatertightRay& tri_ray, const Ray& ray,
-                            float tmin, float& tmax, Hit& best) {
-  Ray probe = ray;
-  probe.tmin = tmin;
-  probe.tmax = tmax;
-  if constexpr (kAnyHit) return geometry.occluded(id, tri_ray, probe);
-  const bool hit = geometry.intersect(id, tri_ray, probe, best);
-  tmax = probe.tmax;
-  return hit;
-}
-
-/// Tests references [first, first + count) against `ray` restricted to [tmin, tmax); on a hit
-/// shrinks `tmax` and updates `best`. With kAnyHit, returns at the first hit. Returns whether
-/// anything was hit; counts tests in `prim_tests` when kCount.
-template <bool kAnyHit, bool kCount>
-inline bool intersect_leaf(const LeafPrimitives& leaf, std::uint32_t first, std::uint32_t count,
-                           const WatertightRay& tri_ray, const Ray& ray, float tmin, float& tmax, Hit& best,
-                           std::uint64_t& prim_tests) {
-  bool found = false;
-  const std::uint32_t end = first + count;
-  for (std::uint32_t i = first; i < end; ++i) {
-    const std::uint32_t id = leaf.prim_ids[i];
-    if constexpr (kCount) ++prim_tests;
-    bool hit_here;
-    if (id < leaf.triangle_count) {
-      float t, u, v;
-      hit_here = intersect_triangle(leaf.triangles[i], tri_ray, tmin, best.tie_limit(id, tmax), t, u, v);
-      if (hit_here) {
-        tmax = t;
-        best = {t, id, u, v};
-      }
-    } else {
-      hit_here = intersect_other<kAnyHit>(*leaf.geometry, id, tri_ray, ray, tmin, tmax, best);
-    }
-    if (hit_here) {
-      found = true;
-      if constexpr (kAnyHit) return true;
-    }
-  }
-  return found;
-}
 
 /// Copies the triangles that `prim_ids` refers to into leaf order (other slots stay zero).
 inline std::vector<Triangle> triangles_in_leaf_order(const Geometry& geometry,
@@ -146,11 +99,11 @@ class TraversalStack {
 /// Hands a traversal's result back: adds its counts to `stats` (when counting) and, on a hit,
 /// writes the hit and shrinks the ray. Returns `found`.
 template <bool kCount>
-inline bool finish_traversal(bool found, float tmax, const Hit& best, std::uint64_t nodes_visited,
-                             std::uint64_t prim_tests, Ray& ray, Hit& hit, TraversalStats* stats) {
+inline bool finish_traversal(bool found, float tmax, const Hit& best, const TraversalCounters& counters, Ray& ray,
+                             Hit& hit, TraversalStats* stats) {
   if constexpr (kCount) {
-    stats->nodes_visited += nodes_visited;
-    stats->prim_tests += prim_tests;
+    stats->nodes_visited += counters.nodes_visited;
+    stats->prim_tests += counters.prim_tests;
     stats->hits += found ? 1 : 0;
   }
   if (found) {

@@ -7,18 +7,11 @@
 #include <cmath>
 #include <limits>
 
+#include "leaf_test.h"
 #include "mailbox.h"
 #include "traversal_common.h"
 
 namespace raylab {
-namespace {
-
-// Stand-in for a ray's mailbox stamp when mailboxing is off: every reference is tested.
-struct NoMailbox {
-  static constexpr bool first_visit(std::uint32_t) { return true; }
-};
-
-}  // namespace
 
 // The fixed part of a ray's walk, per axis: the parameter of the first cell boundary the ray
 // crosses (inf along an axis it does not move along), the parameter length of one cell, the
@@ -36,11 +29,19 @@ struct UniformGrid::Walk {
 };
 
 template <bool kAnyHit, bool kCount>
-bool UniformGrid::dispatch(Ray& ray, Hit& hit, TraversalStats* stats) const {
-  if (m_refs.empty()) return finish_traversal<kCount>(false, ray.tmax, hit, 0, 0, ray, hit, stats);
+bool UniformGrid::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
+  Walk w;
+  if (!clip_and_enter(ray, w)) return finish_traversal<kCount>(false, ray.tmax, hit, {}, ray, hit, stats);
+  // The ray's stamp is taken only now: rays that miss the grid never touch the mailboxes.
+  if (m_mailboxes) return walk_cells<kAnyHit, kCount>(ray, hit, stats, w, m_mailboxes->begin_ray());
+  return walk_cells<kAnyHit, kCount>(ray, hit, stats, w, TestEverySlot{});
+}
+
+bool UniformGrid::clip_and_enter(const Ray& ray, Walk& w) const {
+  if (m_refs.empty()) return false;
   const Vec3 o = ray.origin, d = ray.direction;
   // An infinite or NaN origin would make the boundary distances NaN; such a ray hits nothing.
-  if (!std::isfinite(o.x + o.y + o.z)) return finish_traversal<kCount>(false, ray.tmax, hit, 0, 0, ray, hit, stats);
+  if (!std::isfinite(o.x + o.y + o.z)) return false;
   // Clip to the grid box. The far distance is widened as in the BVH, so that a ray grazing the
   // box where a primitive lies in its face still enters.
   const Vec3 inv_d = safe_reciprocal(d);
@@ -52,10 +53,9 @@ bool UniformGrid::dispatch(Ray& ray, Hit& hit, TraversalStats* stats) const {
     t_in = t0 > t_in ? t0 : t_in;  // a NaN slab (0 * inf: origin in a face plane) is ignored
     t_out = t1 < t_out ? t1 : t_out;
   }
-  if (!(t_in <= t_out * kSlabWiden)) return finish_traversal<kCount>(false, ray.tmax, hit, 0, 0, ray, hit, stats);
+  if (!(t_in <= t_out * kSlabWiden)) return false;
 
   // The entry cell, from the entry point (clamped: rounding may put it just outside).
-  Walk w;
   const Vec3 entry = ray.at(t_in);
   std::ptrdiff_t stride = 1;
   w.index = 0;
@@ -83,26 +83,22 @@ bool UniformGrid::dispatch(Ray& ray, Hit& hit, TraversalStats* stats) const {
     w.index_step[a] = w.dir[a] * stride;
     stride *= n;
   }
-  // The ray's stamp is taken only now: rays that miss the grid never touch the mailboxes.
-  if (m_mailboxes) return traverse<kAnyHit, kCount>(ray, hit, stats, w, m_mailboxes->begin_ray());
-  return traverse<kAnyHit, kCount>(ray, hit, stats, w, NoMailbox{});
+  return true;
 }
 
 template <bool kAnyHit, bool kCount, class Mailbox>
-bool UniformGrid::traverse(Ray& ray, Hit& hit, TraversalStats* stats, Walk& w, Mailbox mailbox) const {
+bool UniformGrid::walk_cells(Ray& ray, Hit& hit, TraversalStats* stats, Walk& w, Mailbox mailbox) const {
   const WatertightRay wr(ray);
   const std::uint32_t* const offsets = m_offsets.data();
   const std::uint8_t* const skip = m_skip.data();
   const std::uint32_t* const refs = m_refs.data();
-  const std::uint32_t* const ids = m_ids.data();
-  const Triangle* const triangles = m_triangles.data();
-  const Sphere* const spheres = m_spheres.data();
+  const SlotPrimitives prims{m_ids.data(),     m_triangles.data(), m_spheres.data(),
+                             m_triangle_count, m_sphere_end,       &m_geometry};
   const float tmin = ray.tmin;
   float tmax = ray.tmax;
   Hit best = hit;
   bool found = false;
-  Ray probe = ray;  // for shapes tested through Geometry, which read their limits from a ray
-  std::uint64_t cells_visited = 0, prim_tests = 0;
+  TraversalCounters counters;  // nodes_visited: the cells walked and the jumps
 
   // Per axis: boundaries crossed so far, and the parameter of the next one. Boundary k lies at
   // t_first + k * t_delta, computed with one rounding (fma) rather than accumulated
@@ -112,51 +108,16 @@ bool UniformGrid::traverse(Ray& ray, Hit& hit, TraversalStats* stats, Walk& w, M
   auto boundary = [&](int a, int k) { return std::fma(float(k), w.t_delta[a], w.t_first[a]); };
   std::size_t index = w.index;
   for (;;) {
-    if constexpr (kCount) ++cells_visited;
+    if constexpr (kCount) ++counters.nodes_visited;
     // The ray leaves the cell at the nearest boundary (ties to the later axis).
     const float t_exit = std::min(t_next[0], std::min(t_next[1], t_next[2]));
     // 0: the cell holds primitives; else the (chessboard) distance in cells to one that does.
     const int distance = skip[index];
     if (distance == 0) {
-      for (std::uint32_t r = offsets[index], end = offsets[index + 1]; r < end; ++r) {
-        const std::uint32_t local = refs[r];
-        if (!mailbox.first_visit(local)) continue;
-        const std::uint32_t id = ids[local];
-        if constexpr (kCount) ++prim_tests;
-        // Triangles and spheres are tested inline; other shapes and groups through Geometry.
-        // Every test starts from the hit found so far, with the tie rule (Hit::tie_limit).
-        if constexpr (kAnyHit) {
-          float t, u, v;
-          bool any;
-          if (id < m_triangle_count) {
-            any = intersect_triangle(triangles[local], wr, tmin, tmax, t, u, v);
-          } else if (id < m_sphere_end) {
-            any = intersect_sphere(spheres[local], ray, tmin, tmax, t);
-          } else {
-            any = m_geometry.occluded(id, wr, probe);
-          }
-          if (any) return finish_traversal<kCount>(true, tmax, best, cells_visited, prim_tests, ray, hit, stats);
-        } else if (id < m_triangle_count) {
-          float t, u, v;
-          if (intersect_triangle(triangles[local], wr, tmin, best.tie_limit(id, tmax), t, u, v)) {
-            tmax = t;
-            best = {t, id, u, v};
-            found = true;
-          }
-        } else if (id < m_sphere_end) {
-          float t;
-          if (intersect_sphere(spheres[local], ray, tmin, best.tie_limit(id, tmax), t)) {
-            tmax = t;
-            best = {t, id, 0.f, 0.f};
-            found = true;
-          }
-        } else {
-          probe.tmax = tmax;
-          if (m_geometry.intersect(id, wr, probe, best)) {
-            tmax = probe.tmax;
-            found = true;
-          }
-        }
+      if (intersect_references<kAnyHit, kCount>(prims, offsets[index], offsets[index + 1], SlotFromList{refs}, mailbox,
+                                                wr, ray, tmin, tmax, best, counters)) {
+        found = true;
+        if constexpr (kAnyHit) break;
       }
     } else if (distance > 1) {
       // Every cell within distance - 1 of this one is empty: cross that cube in one jump. Per
@@ -209,25 +170,10 @@ bool UniformGrid::traverse(Ray& ray, Hit& hit, TraversalStats* stats, Walk& w, M
     index += w.index_step[a];
     t_next[a] = boundary(a, ++crossed[a]);
   }
-  return finish_traversal<kCount>(found, tmax, best, cells_visited, prim_tests, ray, hit, stats);
+  return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
 }
 
-bool UniformGrid::intersect(Ray& ray, Hit& hit) const { return dispatch<false, false>(ray, hit, nullptr); }
-
-bool UniformGrid::occluded(const Ray& ray) const {
-  Ray probe = ray;
-  Hit scratch;
-  return dispatch<true, false>(probe, scratch, nullptr);
-}
-
-bool UniformGrid::intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const {
-  return dispatch<false, true>(ray, hit, &stats);
-}
-
-bool UniformGrid::occluded_counted(const Ray& ray, TraversalStats& stats) const {
-  Ray probe = ray;
-  Hit scratch;
-  return dispatch<true, true>(probe, scratch, &stats);
-}
+// The four entry points, compiled here where the kernel is defined.
+template class TraversalAccelerator<UniformGrid>;
 
 }  // namespace raylab

@@ -50,34 +50,10 @@ bool WideBvh<W>::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   const WatertightRay tri_ray(ray);
   float tmax = ray.tmax;
   Hit best = hit;
-  std::uint64_t nodes_visited = 0, prim_tests = 0;
+  TraversalCounters counters;
   const bool found = walk_wide_bvh<kAnyHit, kCount, W>(m_tree, m_geometry, WideStackEntry{0, 0, ray.tmin}, box_ray,
-                                                       tri_ray, ray, tmax, best, nodes_visited, prim_tests);
-  return finish_traversal<kCount>(found, tmax, best, nodes_visited, prim_tests, ray, hit, stats);
-}
-
-template <int W>
-bool WideBvh<W>::intersect(Ray& ray, Hit& hit) const {
-  return traverse<false, false>(ray, hit, nullptr);
-}
-
-template <int W>
-bool WideBvh<W>::occluded(const Ray& ray) const {
-  Ray probe = ray;
-  Hit scratch;
-  return traverse<true, false>(probe, scratch, nullptr);
-}
-
-template <int W>
-bool WideBvh<W>::intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const {
-  return traverse<false, true>(ray, hit, &stats);
-}
-
-template <int W>
-bool WideBvh<W>::occluded_counted(const Ray& ray, TraversalStats& stats) const {
-  Ray probe = ray;
-  Hit scratch;
-  return traverse<true, true>(probe, scratch, &stats);
+                                                       tri_ray, ray, tmax, best, counters);
+  return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
 }
 
 template <int W>
@@ -103,6 +79,10 @@ AccelInfo WideBvh<W>::info() const {
   return info;
 }
 
+// The single-ray entry points, compiled here where the kernel is defined.
+template class TraversalAccelerator<WideBvh<4>>;
+template class TraversalAccelerator<WideBvh<8>>;
+template class TraversalAccelerator<WideBvh<16>>;
 template class WideBvh<4>;
 template class WideBvh<8>;
 template class WideBvh<16>;

@@ -212,7 +212,7 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
     return static_cast<std::uint32_t>(less_equal_mask(t_near, t_far)) << o;
   };
 
-  std::uint64_t nodes_visited = 0, prim_tests = 0;  // not reported: packets are never counted
+  TraversalCounters unused_counters;  // packets are never counted (kCount = false)
 
   // Ray i found a hit: an any-hit ray is done.
   auto record_hit = [&](int i) {
@@ -258,7 +258,7 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
     for (std::uint32_t m = active & ~parallel; m != 0; m &= m - 1) {
       const int i = std::countr_zero(m);
       if (intersect_wide_leaf_triangles<kAnyHit, false, W>(m_tree.leaves, first, count_flags, tri_rays[i], tmin[i],
-                                                           tmax[i], best[i], prim_tests)) {
+                                                           tmax[i], best[i], unused_counters)) {
         record_hit(i);
       }
     }
@@ -266,7 +266,7 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
     for (std::uint32_t m = active & alive; m != 0; m &= m - 1) {
       const int i = std::countr_zero(m);
       if (intersect_wide_leaf_others<kAnyHit, false, W>(m_tree.leaves, m_geometry, first, count_flags, tri_rays[i],
-                                                        rays[i], tmin[i], tmax[i], best[i], prim_tests)) {
+                                                        rays[i], tmin[i], tmax[i], best[i], unused_counters)) {
         record_hit(i);
       }
     }
@@ -292,7 +292,7 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
         const int i = std::countr_zero(m);
         Ray& r = rays[i];
         if (walk_wide_bvh<kAnyHit, false, W>(m_tree, m_geometry, current.node, WideBoxRay<W>(r), tri_rays[i], r,
-                                             tmax[i], best[i], nodes_visited, prim_tests)) {
+                                             tmax[i], best[i], unused_counters)) {
           record_hit(i);
         }
       }

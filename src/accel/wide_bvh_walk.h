@@ -14,11 +14,12 @@ using bvh_depth::kWideStackSize;  // sized by the builder's depth bound
 
 /// Walks the subtree (or leaf) `start` for one ray, nearest child first, from
 /// distance `ray.tmin` up to `tmax`; on hits shrinks `tmax` and updates `best`. With kAnyHit
-/// stops at the first hit and visits children in slot order. Returns whether anything was hit.
+/// stops at the first hit and visits children in slot order. Returns whether anything was hit;
+/// adds the work to `counters` when kCount.
 template <bool kAnyHit, bool kCount, int W>
 bool walk_wide_bvh(const WideBvhTree<W>& tree, const Geometry& geometry, WideStackEntry start,
                    const WideBoxRay<W>& box_ray, const WatertightRay& tri_ray, const Ray& ray, float& tmax, Hit& best,
-                   std::uint64_t& nodes_visited, std::uint64_t& prim_tests) {
+                   TraversalCounters& counters) {
   const WideBvhNode<W>* const nodes = tree.nodes.data();
   const float tmin = ray.tmin;
   bool found = false;
@@ -28,13 +29,13 @@ bool walk_wide_bvh(const WideBvhTree<W>& tree, const Geometry& geometry, WideSta
   for (;;) {
     if (current.count != 0) {
       if (intersect_wide_leaf<kAnyHit, kCount, W>(tree.leaves, geometry, current.child, current.count, tri_ray, ray,
-                                                  tmin, tmax, best, prim_tests)) {
+                                                  tmin, tmax, best, counters)) {
         found = true;
         if constexpr (kAnyHit) return true;
       }
     } else {
       const WideBvhNode<W>& node = nodes[current.child];
-      if constexpr (kCount) ++nodes_visited;
+      if constexpr (kCount) ++counters.nodes_visited;
       alignas(64) float t_enter[W];
       unsigned mask = box_ray.test(node, tmin, tmax, t_enter);
       if (mask != 0) {

@@ -6,14 +6,14 @@
 #include <span>
 #include <vector>
 
-#include "raylab/accel/accelerator.h"
+#include "raylab/accel/traversal_accelerator.h"
 #include "raylab/geometry/geometry.h"
 
 namespace raylab {
 
 /// Tests every primitive for every ray. Slow and obviously correct: the reference every other
 /// structure is checked against.
-class BruteForce final : public Accelerator {
+class BruteForce final : public TraversalAccelerator<BruteForce> {
  public:
   /// Keeps a reference to `geometry`, which must outlive this object.
   explicit BruteForce(const Geometry& geometry);
@@ -21,24 +21,20 @@ class BruteForce final : public Accelerator {
   BruteForce(const Geometry& geometry, std::span<const std::uint32_t> ids);
 
   Box3 bounds() const override { return m_bounds; }
-  bool intersect(Ray& ray, Hit& hit) const override;
-  bool occluded(const Ray& ray) const override;
-  bool intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const override;
-  bool occluded_counted(const Ray& ray, TraversalStats& stats) const override;
-  using Accelerator::intersect;
-  using Accelerator::occluded;
   AccelInfo info() const override;
 
  private:
-  template <bool kCount>
-  bool intersect_impl(Ray& ray, Hit& hit, TraversalStats* stats) const;
-  template <bool kCount>
-  bool occluded_impl(const Ray& ray, TraversalStats* stats) const;
+  friend class TraversalAccelerator<BruteForce>;
+  // The kernel of every query (TraversalAccelerator).
+  template <bool kAnyHit, bool kCount>
+  bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
 
   const Geometry& m_geometry;
   std::vector<std::uint32_t> m_ids;  ///< what to test, in ascending order
   Box3 m_bounds;
   double m_build_seconds = 0.0;
 };
+
+extern template class TraversalAccelerator<BruteForce>;
 
 }  // namespace raylab

@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "raylab/accel/accelerator.h"
+#include "raylab/accel/traversal_accelerator.h"
 #include "raylab/geometry/geometry.h"
 
 namespace raylab {
@@ -74,7 +74,7 @@ struct BvhBoxRay;
 
 /// The BVH accelerator. Triangles referenced by leaves are copied in leaf order, so a leaf's
 /// triangles are contiguous in memory; other shapes are tested through the Geometry.
-class Bvh final : public Accelerator {
+class Bvh final : public TraversalAccelerator<Bvh> {
  public:
   /// Builds the tree; keeps a reference to `geometry`, which must outlive this object.
   explicit Bvh(const Geometry& geometry, const BvhConfig& config = {});
@@ -82,22 +82,14 @@ class Bvh final : public Accelerator {
   Bvh(const Geometry& geometry, std::span<const std::uint32_t> ids, const BvhConfig& config = {});
 
   Box3 bounds() const override;
-  bool intersect(Ray& ray, Hit& hit) const override;
-  bool occluded(const Ray& ray) const override;
-  bool intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const override;
-  bool occluded_counted(const Ray& ray, TraversalStats& stats) const override;
-  using Accelerator::intersect;
-  using Accelerator::occluded;
   AccelInfo info() const override;
 
   /// The tree, for tests and tools.
   const BvhTree& tree() const { return m_tree; }
 
  private:
-  template <bool kCount>
-  bool intersect_impl(Ray& ray, Hit& hit, TraversalStats* stats) const;
-  template <bool kCount>
-  bool occluded_impl(const Ray& ray, TraversalStats* stats) const;
+  friend class TraversalAccelerator<Bvh>;
+  // The kernel of every query (TraversalAccelerator): dispatches on the direction's octant.
   template <bool kAnyHit, bool kCount>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
   template <bool kAnyHit, bool kCount, int kOctant>
@@ -109,5 +101,7 @@ class Bvh final : public Accelerator {
   std::uint32_t m_triangle_count = 0;      ///< prim ids below this are triangles
   double m_build_seconds = 0.0;
 };
+
+extern template class TraversalAccelerator<Bvh>;
 
 }  // namespace raylab

@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-#include "raylab/accel/accelerator.h"
+#include "raylab/accel/traversal_accelerator.h"
 #include "raylab/geometry/geometry.h"
 
 namespace raylab {
@@ -103,7 +103,7 @@ class Mailboxes;
 
 /// The octree accelerator. Each ray visits the leaves it crosses in order along the ray
 /// (Revelles et al. 2000) and stops at the first leaf whose exit lies beyond the closest hit.
-class Octree final : public Accelerator {
+class Octree final : public TraversalAccelerator<Octree> {
  public:
   /// Builds the octree over every primitive of `geometry`, which must outlive this object.
   explicit Octree(const Geometry& geometry, const OctreeConfig& config = {});
@@ -112,12 +112,6 @@ class Octree final : public Accelerator {
   ~Octree() override;
 
   Box3 bounds() const override { return m_tree.bounds; }
-  bool intersect(Ray& ray, Hit& hit) const override;
-  bool occluded(const Ray& ray) const override;
-  bool intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const override;
-  bool occluded_counted(const Ray& ray, TraversalStats& stats) const override;
-  using Accelerator::intersect;
-  using Accelerator::occluded;
   /// Name "octree"; memory counts nodes, references, ids and one thread's mailboxes.
   AccelInfo info() const override;
 
@@ -127,6 +121,8 @@ class Octree final : public Accelerator {
   const OctreeConfig& config() const { return m_config; }
 
  private:
+  friend class TraversalAccelerator<Octree>;
+  // The kernel of every query (TraversalAccelerator).
   template <bool kAnyHit, bool kCount>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
 
@@ -134,8 +130,9 @@ class Octree final : public Accelerator {
   OctreeConfig m_config;
   OctreeTree m_tree;
   std::unique_ptr<Mailboxes> m_mailboxes;  ///< one slot per entry of m_tree.ids
-  std::uint32_t m_triangle_count = 0;      ///< primitive ids below this are triangles
   double m_build_seconds = 0.0;
 };
+
+extern template class TraversalAccelerator<Octree>;
 
 }  // namespace raylab

@@ -26,7 +26,7 @@
 #include <span>
 #include <vector>
 
-#include "raylab/accel/accelerator.h"
+#include "raylab/accel/traversal_accelerator.h"
 #include "raylab/geometry/geometry.h"
 
 namespace raylab {
@@ -67,7 +67,7 @@ std::array<int, 3> grid_resolution(const Box3& box, std::size_t count, float den
 ///
 /// Counted queries report as nodes_visited the cells walked plus the empty-space jumps, and as
 /// prim_tests the primitive tests actually run (after the mailboxes).
-class UniformGrid final : public Accelerator {
+class UniformGrid final : public TraversalAccelerator<UniformGrid> {
  public:
   /// Builds the grid over every primitive of `geometry`, which must outlive this object.
   explicit UniformGrid(const Geometry& geometry, const GridConfig& config = {});
@@ -80,12 +80,6 @@ class UniformGrid final : public Accelerator {
   ~UniformGrid() override;
 
   Box3 bounds() const override { return m_bounds; }
-  bool intersect(Ray& ray, Hit& hit) const override;
-  bool occluded(const Ray& ray) const override;
-  bool intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const override;
-  bool occluded_counted(const Ray& ray, TraversalStats& stats) const override;
-  using Accelerator::intersect;
-  using Accelerator::occluded;
   /// Name "grid"; node_count = cells, leaf_count = non-empty cells, memory_bytes as above
   /// (without the per-thread mailboxes).
   AccelInfo info() const override;
@@ -109,12 +103,16 @@ class UniformGrid final : public Accelerator {
   void fill_skip_distances();
   // Orders m_ids by the cell of each primitive's centre.
   void order_by_cell(std::array<int, 3> resolution);
-  // Clips the ray to the grid and finds its entry cell, then hands over to traverse().
+  friend class TraversalAccelerator<UniformGrid>;
+  // The kernel of every query (TraversalAccelerator): clip, enter, walk.
   template <bool kAnyHit, bool kCount>
-  bool dispatch(Ray& ray, Hit& hit, TraversalStats* stats) const;
+  bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
+  // Clips the ray to the grid's box and sets up its walk from the entry cell; false when the
+  // ray misses the grid.
+  bool clip_and_enter(const Ray& ray, Walk& walk) const;
   // Walks the cells from `walk` on; `mailbox` is the ray's stamp or a stand-in that tests all.
   template <bool kAnyHit, bool kCount, class Mailbox>
-  bool traverse(Ray& ray, Hit& hit, TraversalStats* stats, Walk& walk, Mailbox mailbox) const;
+  bool walk_cells(Ray& ray, Hit& hit, TraversalStats* stats, Walk& walk, Mailbox mailbox) const;
 
   const Geometry& m_geometry;
   GridConfig m_config;
@@ -135,5 +133,7 @@ class UniformGrid final : public Accelerator {
   double m_build_seconds = 0.0;
   std::unique_ptr<Mailboxes> m_mailboxes;  ///< null when mailboxing is off
 };
+
+extern template class TraversalAccelerator<UniformGrid>;
 
 }  // namespace raylab

@@ -106,7 +106,7 @@ WideBvhTree<W> collapse_to_wide(const BvhTree& tree, const Geometry& geometry);
 /// packets (up to 16 rays share the walk, with interval culling, falling back to single rays when
 /// few remain); results equal the single-ray results bit for bit.
 template <int W>
-class WideBvh final : public Accelerator {
+class WideBvh final : public TraversalAccelerator<WideBvh<W>> {
  public:
   /// Builds the tree; keeps a reference to `geometry`, which must outlive this object.
   explicit WideBvh(const Geometry& geometry, const BvhConfig& config = {});
@@ -114,10 +114,8 @@ class WideBvh final : public Accelerator {
   WideBvh(const Geometry& geometry, std::span<const std::uint32_t> ids, const BvhConfig& config = {});
 
   Box3 bounds() const override { return m_bounds; }
-  bool intersect(Ray& ray, Hit& hit) const override;
-  bool occluded(const Ray& ray) const override;
-  bool intersect_counted(Ray& ray, Hit& hit, TraversalStats& stats) const override;
-  bool occluded_counted(const Ray& ray, TraversalStats& stats) const override;
+  using TraversalAccelerator<WideBvh<W>>::intersect;
+  using TraversalAccelerator<WideBvh<W>>::occluded;
   void intersect(std::span<Ray> rays, std::span<Hit> hits) const override;
   void occluded(std::span<const Ray> rays, std::span<std::uint8_t> occluded) const override;
   AccelInfo info() const override;
@@ -130,6 +128,8 @@ class WideBvh final : public Accelerator {
   static BvhConfig build_config(const BvhConfig& config);
 
  private:
+  friend class TraversalAccelerator<WideBvh<W>>;
+  // The kernel of every single-ray query (TraversalAccelerator).
   template <bool kAnyHit, bool kCount>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
   template <bool kAnyHit>
@@ -143,6 +143,9 @@ class WideBvh final : public Accelerator {
   double m_build_seconds = 0.0;
 };
 
+extern template class TraversalAccelerator<WideBvh<4>>;
+extern template class TraversalAccelerator<WideBvh<8>>;
+extern template class TraversalAccelerator<WideBvh<16>>;
 extern template class WideBvh<4>;
 extern template class WideBvh<8>;
 extern template class WideBvh<16>;

@@ -1,0 +1,156 @@
+#pragma once
+// The one leaf test of the structures that test primitives one by one (internal to src/accel):
+// the binary BVH's leaves, the uniform grid's cells, the octree's leaves and the wide BVH's
+// non-triangle lists. It holds the rule every structure must share — on an exact tie in t the
+// lower primitive id wins (Hit::tie_limit) — so that all of them return the same hit.
+
+#include <cstdint>
+
+#include "raylab/geometry/geometry.h"
+#include "traversal_common.h"
+
+namespace raylab {
+
+/// Primitives a structure keeps in its own order ("slots"): the global id at each slot, and
+/// copies of the triangles at the same slots (for locality: the leaf's data lies together).
+/// Every other kind is tested through the Geometry. The binary BVH.
+struct SlotTriangles {
+  static constexpr bool kInlineSpheres = false;  ///< spheres go through the Geometry
+
+  const std::uint32_t* ids;      ///< the global id of each slot
+  const Triangle* triangles;     ///< parallel to ids; valid where the id is a triangle's
+  std::uint32_t triangle_count;  ///< global ids below this are triangles
+  const Geometry* geometry;      ///< for every other kind (and groups)
+
+  /// The triangle at `slot` (global id `id`).
+  const Triangle& triangle(std::uint32_t slot, std::uint32_t /*id*/) const { return triangles[slot]; }
+};
+
+/// Like SlotTriangles, with copies of the spheres at their slots as well. The uniform grid.
+struct SlotPrimitives {
+  static constexpr bool kInlineSpheres = true;  ///< spheres are tested here
+
+
+  const std::uint32_t* ids;      ///< the global id of each slot
+  const Triangle* triangles;     ///< parallel to ids; valid where the id is a triangle's
+  const Sphere* spheres;         ///< parallel to ids; valid where the id is an inline sphere's
+  std::uint32_t triangle_count;  ///< global ids below this are triangles
+  std::uint32_t sphere_end;      ///< ids in [triangle_count, sphere_end) are tested as inline spheres
+  const Geometry* geometry;      ///< for every other kind (and groups)
+
+  /// The triangle at `slot` (global id `id`).
+  const Triangle& triangle(std::uint32_t slot, std::uint32_t /*id*/) const { return triangles[slot]; }
+  /// The sphere at `slot` (global id `id`).
+  const Sphere& sphere(std::uint32_t slot, std::uint32_t /*id*/) const { return spheres[slot]; }
+};
+
+/// Primitives read from the Geometry by global id, with no copies: the octree and the wide
+/// BVH's lists of non-triangles. `ids` still maps a structure's slot to the global id.
+struct GeometryPrimitives {
+  static constexpr bool kInlineSpheres = true;  ///< spheres are tested here
+
+  const std::uint32_t* ids;      ///< the global id of each slot
+  const Triangle* triangles;     ///< the Geometry's triangles, by global id
+  const Sphere* spheres;         ///< the Geometry's spheres, by global id - triangle_count
+  std::uint32_t triangle_count;  ///< global ids below this are triangles
+  std::uint32_t sphere_end;      ///< ids in [triangle_count, sphere_end) are spheres
+  const Geometry* geometry;      ///< for every other kind (and groups)
+
+  /// The primitives of `g`, numbered by `slot_ids`.
+  GeometryPrimitives(const std::uint32_t* slot_ids, const Geometry& g)
+      : ids(slot_ids),
+        triangles(g.triangles.data()),
+        spheres(g.spheres.data()),
+        triangle_count(static_cast<std::uint32_t>(g.triangles.size())),
+        sphere_end(triangle_count + static_cast<std::uint32_t>(g.spheres.size())),
+        geometry(&g) {}
+
+  /// The triangle with global id `id`.
+  const Triangle& triangle(std::uint32_t /*slot*/, std::uint32_t id) const { return triangles[id]; }
+  /// The sphere with global id `id`.
+  const Sphere& sphere(std::uint32_t /*slot*/, std::uint32_t id) const { return spheres[id - triangle_count]; }
+};
+
+/// Slot of reference r when a structure's references are its slots (the BVH's leaves).
+struct SlotIsReference {
+  /// `r` itself.
+  std::uint32_t operator()(std::uint32_t r) const { return r; }
+};
+
+/// Slot of reference r when a structure lists slots per cell or leaf (grid, octree).
+struct SlotFromList {
+  const std::uint32_t* slots;  ///< the structure's reference list
+  /// `slots[r]`.
+  std::uint32_t operator()(std::uint32_t r) const { return slots[r]; }
+};
+
+/// Tests every slot, for structures that reference each primitive once (no mailboxes).
+struct TestEverySlot {
+  /// Always true.
+  static constexpr bool first_visit(std::uint32_t) { return true; }
+};
+
+/// Tests primitive (or group) `id` through the Geometry against `ray` restricted to
+/// [tmin, tmax). Closest hit: on a hit shrinks `tmax` and updates `best`. With kAnyHit only
+/// answers whether anything is hit (a group, a whole sub-structure, may stop at its first hit).
+template <bool kAnyHit>
+inline bool intersect_through_geometry(const Geometry& geometry, std::uint32_t id, const WatertightRay& tri_ray,
+                                       const Ray& ray, float tmin, float& tmax, Hit& best) {
+  Ray probe = ray;
+  probe.tmin = tmin;
+  probe.tmax = tmax;
+  if constexpr (kAnyHit) return geometry.occluded(id, tri_ray, probe);
+  const bool hit = geometry.intersect(id, tri_ray, probe, best);
+  tmax = probe.tmax;
+  return hit;
+}
+
+/// Tests the references [begin, end) against `ray` restricted to [tmin, tmax): reference r is
+/// slot `slot_of(r)` of `prims`, skipped unless `mailbox.first_visit(slot)` (a slot that an
+/// earlier cell of the same ray already tested). Triangles and inline spheres are tested here,
+/// other kinds and groups through the Geometry; each test starts from the closest hit so far
+/// with the tie rule. Closest hit: on a hit shrinks `tmax` and updates `best`. With kAnyHit,
+/// returns at the first hit and leaves `tmax` and `best` alone. Returns whether anything was
+/// hit; counts the tests run in `counters.prim_tests` when kCount.
+template <bool kAnyHit, bool kCount, class Primitives, class SlotOf, class Mailbox>
+inline bool intersect_references(const Primitives& prims, std::uint32_t begin, std::uint32_t end, SlotOf slot_of,
+                                 Mailbox& mailbox, const WatertightRay& tri_ray, const Ray& ray, float tmin,
+                                 float& tmax, Hit& best, TraversalCounters& counters) {
+  bool found = false;
+  for (std::uint32_t r = begin; r < end; ++r) {
+    const std::uint32_t slot = slot_of(r);
+    if (!mailbox.first_visit(slot)) continue;
+    const std::uint32_t id = prims.ids[slot];
+    if constexpr (kCount) ++counters.prim_tests;
+    bool hit_here;
+    if (id < prims.triangle_count) {
+      float t, u, v;
+      hit_here = intersect_triangle(prims.triangle(slot, id), tri_ray, tmin, kAnyHit ? tmax : best.tie_limit(id, tmax),
+                                    t, u, v);
+      if (!kAnyHit && hit_here) {
+        tmax = t;
+        best = {t, id, u, v};
+      }
+    } else if constexpr (Primitives::kInlineSpheres) {
+      if (id < prims.sphere_end) {
+        float t;
+        hit_here = intersect_sphere(prims.sphere(slot, id), ray, tmin, kAnyHit ? tmax : best.tie_limit(id, tmax), t);
+        if (!kAnyHit && hit_here) {
+          tmax = t;
+          best = {t, id, 0.f, 0.f};
+        }
+      } else {
+        hit_here = intersect_through_geometry<kAnyHit>(*prims.geometry, id, tri_ray, ray, tmin, tmax, best);
+      }
+    } else {
+      hit_here = intersect_through_geometry<kAnyHit>(*prims.geometry, id, tri_ray, ray, tmin, tmax, best);
+    }
+    if (hit_here) {
+      found = true;
+      if constexpr (kAnyHit) return true;
+    }
+  }
+  return found;
+}
+
+}  // namespace raylab
