@@ -2,18 +2,11 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <string_view>
 
-#include "raylab/core/error.h"
-#include "raylab/geometry/geometry.h"
+#include "mesh_parser_fuzz.h"
 #include "raylab/io/ply_loader.h"
 
-/// Parses `data` as a PLY file into a fresh Geometry; InputError is the expected outcome of bad input.
+/// Parses `data` as an PLY file into a fresh Geometry; InputError is the expected outcome of bad input.
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  raylab::Geometry geometry;
-  try {
-    raylab::parse_ply(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.ply", geometry, 0);
-  } catch (const raylab::InputError&) {
-  }
-  return 0;
+  return fuzz_mesh_parser(data, size, "fuzz.ply", raylab::parse_ply);
 }

@@ -3,7 +3,6 @@
 // PFM ignore the layers.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <map>
@@ -12,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "io_test_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/image_io.h"
 
@@ -33,15 +33,8 @@ ExrChannels read_exr(const std::string& path) {
 
 class ExrLayers : public ::testing::Test {
  protected:
-  void SetUp() override {
-    m_dir = fs::temp_directory_path() / ("raylab-exr-layers-" + std::to_string(::getpid()) + "-" +
-                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(m_dir);
-    fs::create_directories(m_dir);
-  }
-  void TearDown() override { fs::remove_all(m_dir); }
-  std::string file(const std::string& name) const { return (m_dir / name).string(); }
-  fs::path m_dir;
+  std::string file(const std::string& name) const { return m_dir.file(name); }
+  test::TempDir m_dir{"exr-layers"};
 };
 
 // A 7x5 film and two layers with a distinct value per pixel (odd size: no row padding hides).
@@ -111,7 +104,7 @@ TEST_F(ExrLayers, BadLayersAreRejectedBeforeAnythingIsWritten) {
   std::vector<ImageLayer> twice = sample_layers();
   twice[1].name = twice[0].name;
   EXPECT_THROW(write_image(film, file("twice.exr"), twice), std::invalid_argument);
-  EXPECT_TRUE(fs::is_empty(m_dir));
+  EXPECT_TRUE(fs::is_empty(m_dir.path()));
 }
 
 }  // namespace

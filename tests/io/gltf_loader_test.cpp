@@ -4,19 +4,17 @@
 
 #include <gtest/gtest.h>
 #include <stb/stb_image_write.h>
-#include <unistd.h>
 
-#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 #include <vector>
 
+#include "io_test_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/gltf_loader.h"
 
@@ -153,27 +151,10 @@ class GltfDoc {
 
 class Gltf : public ::testing::Test {
  protected:
-  void SetUp() override {
-    static std::atomic<int> counter{0};
-    m_root =
-        fs::temp_directory_path() / ("raylab-gltf-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    m_dir = m_root / "scene";
-    fs::remove_all(m_root);
-    fs::create_directories(m_dir);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(m_root, ec);
-  }
+  void SetUp() override { fs::create_directories(m_dir); }
 
-  std::string write(const fs::path& path, const Bytes& bytes) {
-    std::ofstream(path, std::ios::binary)
-        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    return path.string();
-  }
-  std::string write(const fs::path& path, const std::string& text) {
-    return write(path, Bytes(text.begin(), text.end()));
-  }
+  std::string write(const fs::path& path, const Bytes& bytes) { return test::write_bytes(path, bytes); }
+  std::string write(const fs::path& path, const std::string& text) { return test::write_text(path, text); }
 
   void load(GltfDoc& doc, const GltfLoadOptions& options = {}) {
     m_path = write(m_dir / "scene.gltf", doc.gltf_text());
@@ -201,7 +182,8 @@ class Gltf : public ::testing::Test {
   }
 
   Scene m_scene;
-  fs::path m_root, m_dir;
+  test::TempDir m_tmp{"gltf"};
+  const fs::path m_root = m_tmp.path(), m_dir = m_root / "scene";
   std::string m_path;
 };
 

@@ -2,9 +2,7 @@
 // curves invert each other, and the RMSE is the analytic one.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -12,6 +10,7 @@
 #include <limits>
 #include <string>
 
+#include "io_test_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/image_io.h"
 
@@ -22,21 +21,10 @@ namespace fs = std::filesystem;
 
 class ImageIo : public ::testing::Test {
  protected:
-  void SetUp() override {
-    static std::atomic<int> counter{0};
-    m_dir =
-        fs::temp_directory_path() / ("raylab-image-io-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    fs::remove_all(m_dir);
-    fs::create_directories(m_dir);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(m_dir, ec);
-  }
-  std::string file(const std::string& name) const { return (m_dir / name).string(); }
+  std::string file(const std::string& name) const { return m_dir.file(name); }
 
  private:
-  fs::path m_dir;
+  test::TempDir m_dir{"image-io"};
 };
 
 // An odd-sized film where every channel of every pixel is different, so that a flipped row

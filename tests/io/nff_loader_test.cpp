@@ -3,9 +3,7 @@
 // line and column.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +12,8 @@
 #include <string>
 
 #include "../test_paths.h"
+#include "io_test_util.h"
+#include "parse_error_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/nff_loader.h"
 #include "raylab/io/read_file.h"
@@ -192,19 +192,12 @@ TEST(NffLoader, EmptyFileIsAnEmptyScene) {
 }
 
 TEST(NffLoader, LoadNffReadsTheFileAndReportsPolygons) {
-  static std::atomic<int> counter{0};
-  const fs::path dir =
-      fs::temp_directory_path() / ("raylab-nff-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-  fs::create_directories(dir);
-  const std::string path = (dir / "scene.nff").string();
+  const test::TempDir dir("nff");
+  const std::string path = dir.file("scene.nff");
   std::ofstream(path, std::ios::binary) << "p 3\n0 0 0\n1 0 0\n1 0 0\np 3\n0 0 0\n1 0 0\n0 1 0\nl 0 0 9\nq\n";
   Scene scene;
-  try {
-    load_nff(path, scene);
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(path + ":10:1: unknown entity 'q'", 0), 0u) << e.what();
-  }
+  const std::string message = test::thrown_message([&] { load_nff(path, scene); });
+  EXPECT_EQ(message.rfind(path + ":10:1: unknown entity 'q'", 0), 0u) << message;
   std::ofstream(path, std::ios::binary) << "p 3\n0 0 0\n1 0 0\n1 0 0\np 3\n0 0 0\n1 0 0\n0 1 0\nl 0 0 9\n";
   Scene good;
   const MeshLoadReport r = load_nff(path, good);
@@ -212,8 +205,7 @@ TEST(NffLoader, LoadNffReadsTheFileAndReportsPolygons) {
   EXPECT_EQ(r.degenerate_dropped, 1u);
   ASSERT_EQ(good.lights.size(), 1u);
   expect_vec(good.lights[0].intensity, {1.f, 1.f, 1.f});  // finish() ran: 1 / sqrt(1)
-  EXPECT_THROW(load_nff((dir / "missing.nff").string(), good), InputError);
-  fs::remove_all(dir);
+  EXPECT_THROW(load_nff(dir.file("missing.nff"), good), InputError);
 }
 
 // ---- malformed input, each located exactly ----

@@ -2,14 +2,12 @@
 // here, a real scanned mesh when present, and errors located at the exact line and column.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <atomic>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "../test_paths.h"
+#include "io_test_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/obj_loader.h"
 
@@ -20,22 +18,11 @@ namespace fs = std::filesystem;
 
 class ObjLoader : public ::testing::Test {
  protected:
-  void SetUp() override {
-    static std::atomic<int> counter{0};
-    m_dir = fs::temp_directory_path() / ("raylab-obj-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    fs::remove_all(m_dir);
-    fs::create_directories(m_dir);
-    m_object = m_scene.add_object("mesh", m_scene.add_material({}));
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(m_dir, ec);
-  }
+  void SetUp() override { m_object = m_scene.add_object("mesh", m_scene.add_material({})); }
 
   // Writes `text` to a file in the test's folder and loads it into the scene.
   MeshLoadReport load(const std::string& text) {
-    m_path = (m_dir / "mesh.obj").string();
-    std::ofstream(m_path, std::ios::binary) << text;
+    m_path = test::write_text(m_dir.path() / "mesh.obj", text);
     return load_obj(m_path, m_scene, m_object);
   }
 
@@ -57,7 +44,7 @@ class ObjLoader : public ::testing::Test {
 
   Scene m_scene;
   std::uint32_t m_object = 0;
-  fs::path m_dir;
+  test::TempDir m_dir{"obj"};
   std::string m_path;
 };
 
@@ -186,7 +173,7 @@ TEST_F(ObjLoader, ShortFacesDoNotShiftErrorPositions) {
 }
 
 TEST_F(ObjLoader, MissingFileIsAnInputError) {
-  const std::string missing = (m_dir / "nope.obj").string();
+  const std::string missing = m_dir.file("nope.obj");
   try {
     load_obj(missing, m_scene, m_object);
     ADD_FAILURE() << "no error";

@@ -3,15 +3,13 @@
 
 #include <gtest/gtest.h>
 #include <stb/stb_image_write.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "io_test_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/image_io.h"
 #include "raylab/io/obj_loader.h"
@@ -26,25 +24,14 @@ constexpr const char* kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
 class ObjMtl : public ::testing::Test {
  protected:
   void SetUp() override {
-    static std::atomic<int> counter{0};
-    m_root =
-        fs::temp_directory_path() / ("raylab-objmtl-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    m_dir = m_root / "model";
-    fs::remove_all(m_root);
     fs::create_directories(m_dir);
     Material grey;
     grey.name = "fallback";
     m_object = m_scene.add_object("mesh", m_scene.add_material(grey));
   }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(m_root, ec);
-  }
-
   std::string write_file(const fs::path& path, const std::string& text) {
     fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << text;
-    return path.string();
+    return test::write_text(path, text);
   }
   std::string write(const std::string& name, const std::string& text) { return write_file(m_dir / name, text); }
 
@@ -81,7 +68,8 @@ class ObjMtl : public ::testing::Test {
 
   Scene m_scene;
   std::uint32_t m_object = 0;
-  fs::path m_root, m_dir;
+  test::TempDir m_tmp{"objmtl"};
+  const fs::path m_root = m_tmp.path(), m_dir = m_root / "model";
   std::string m_path;
 };
 

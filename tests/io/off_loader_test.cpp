@@ -3,7 +3,6 @@
 // error at the exact line:col, and random or mutated input never crashes.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -14,6 +13,7 @@
 #include <vector>
 
 #include "../test_paths.h"
+#include "io_test_util.h"
 #include "parse_error_util.h"
 #include "raylab/core/error.h"
 #include "raylab/core/rng.h"
@@ -172,21 +172,15 @@ TEST(OffLoader, ArmadilloHasAllItsTriangles) {
 }
 
 TEST(OffLoader, LoadsFromAFileAndNamesItInErrors) {
-  const fs::path dir = fs::temp_directory_path() / ("raylab-off-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const std::string good = (dir / "good.off").string(), bad = (dir / "bad.off").string();
+  const test::TempDir dir("off");
+  const std::string good = dir.file("good.off"), bad = dir.file("bad.off");
   std::ofstream(good) << kTriangle;
   std::ofstream(bad) << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n";
   Scene scene;
   EXPECT_EQ(load_off(good, scene, 0).triangles, 1u);
-  try {
-    load_off(bad, scene, 0);
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(bad + ":6:7: vertex index 5 is out of range", 0), 0u) << e.what();
-  }
-  EXPECT_THROW(load_off((dir / "missing.off").string(), scene, 0), InputError);
-  fs::remove_all(dir);
+  const std::string message = test::thrown_message([&] { load_off(bad, scene, 0); });
+  EXPECT_EQ(message.rfind(bad + ":6:7: vertex index 5 is out of range", 0), 0u) << message;
+  EXPECT_THROW(load_off(dir.file("missing.off"), scene, 0), InputError);
 }
 
 // ---------------------------------------------------------------------------- bad input

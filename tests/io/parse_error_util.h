@@ -12,16 +12,22 @@
 
 namespace raylab::test {
 
-/// The message of the InputError that `parse(bytes, file, geometry, 0)` throws, or "no error".
-template <class Parse>
-std::string parse_error(Parse parse, const std::string& bytes, const std::string& file) {
-  Geometry g;
+/// The message of the InputError that `call()` throws, or "no error".
+template <class Call>
+std::string thrown_message(Call call) {
   try {
-    parse(bytes, file, g, 0);
+    call();
   } catch (const InputError& e) {
     return e.what();
   }
   return "no error";
+}
+
+/// The message of the InputError that `parse(bytes, file, geometry, 0)` throws, or "no error".
+template <class Parse>
+std::string parse_error(Parse parse, const std::string& bytes, const std::string& file) {
+  Geometry g;
+  return thrown_message([&] { parse(bytes, file, g, 0); });
 }
 
 /// Expects `message` to start with `prefix` (the position) and to contain `words`.

@@ -5,7 +5,6 @@
 // crashes.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -21,6 +20,7 @@
 #include <vector>
 
 #include "../test_paths.h"
+#include "io_test_util.h"
 #include "parse_error_util.h"
 #include "raylab/core/error.h"
 #include "raylab/core/rng.h"
@@ -516,22 +516,16 @@ TEST(PlyLoader, IgeaStripsExpandToTheTrianglesTheyImply) {
 }
 
 TEST(PlyLoader, LoadsFromAFileAndNamesItInErrors) {
-  const fs::path dir = fs::temp_directory_path() / ("raylab-ply-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const std::string good = (dir / "good.ply").string(), bad = (dir / "bad.ply").string();
+  const test::TempDir dir("ply");
+  const std::string good = dir.file("good.ply"), bad = dir.file("bad.ply");
   std::ofstream(good, std::ios::binary) << sample(Enc::kBig, Layout::kMixed);
   std::ofstream(bad, std::ios::binary) << ascii_square("0 0 0\n1 0 0\n1 1 0\n0 1 0\n", "3 0 1 2\n3 0 2 4\n");
   Scene scene;
   EXPECT_EQ(load_ply(good, scene, 0).triangles, 4u);
   expect_sample(scene.geometry, true, true);
-  try {
-    load_ply(bad, scene, 0);
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(bad + ":15:7: ", 0), 0u) << e.what();
-  }
-  EXPECT_THROW(load_ply((dir / "missing.ply").string(), scene, 0), InputError);
-  fs::remove_all(dir);
+  const std::string message = test::thrown_message([&] { load_ply(bad, scene, 0); });
+  EXPECT_EQ(message.rfind(bad + ":15:7: ", 0), 0u) << message;
+  EXPECT_THROW(load_ply(dir.file("missing.ply"), scene, 0), InputError);
 }
 
 // ---------------------------------------------------------------------------- bad input

@@ -4,7 +4,6 @@
 // mutated input never crashes.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -16,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "io_test_util.h"
 #include "parse_error_util.h"
 #include "raylab/core/error.h"
 #include "raylab/core/rng.h"
@@ -156,22 +156,16 @@ TEST(StlLoader, ZeroAreaFacetsAreCountedAndDropped) {
 }
 
 TEST(StlLoader, LoadsFromAFileAndNamesItInErrors) {
-  const fs::path dir = fs::temp_directory_path() / ("raylab-stl-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const std::string good = (dir / "good.stl").string(), bad = (dir / "bad.stl").string();
+  const test::TempDir dir("stl");
+  const std::string good = dir.file("good.stl"), bad = dir.file("bad.stl");
   std::ofstream(good, std::ios::binary) << binary({kSquare[0], kSquare[1]});
   std::ofstream(bad, std::ios::binary) << binary({kSquare[0], kSquare[1]}, "x", 3);
   Scene scene;
   EXPECT_EQ(load_stl(good, scene, 0).triangles, 2u);
   expect_square(scene.geometry);
-  try {
-    load_stl(bad, scene, 0);
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(bad + ": byte 80: unexpected end of file", 0), 0u) << e.what();
-  }
-  EXPECT_THROW(load_stl((dir / "missing.stl").string(), scene, 0), InputError);
-  fs::remove_all(dir);
+  const std::string message = test::thrown_message([&] { load_stl(bad, scene, 0); });
+  EXPECT_EQ(message.rfind(bad + ": byte 80: unexpected end of file", 0), 0u) << message;
+  EXPECT_THROW(load_stl(dir.file("missing.stl"), scene, 0), InputError);
 }
 
 // ---------------------------------------------------------------------------- bad input

@@ -4,15 +4,13 @@
 
 #include <gtest/gtest.h>
 #include <stb/stb_image_write.h>
-#include <unistd.h>
 
-#include <atomic>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "io_test_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/image_io.h"
 #include "raylab/io/texture_io.h"
@@ -95,22 +93,8 @@ Bytes stb_png(int w, int h, int comp, const Bytes& pixels) {
 
 class TextureIo : public ::testing::Test {
  protected:
-  void SetUp() override {
-    static std::atomic<int> counter{0};
-    m_dir =
-        fs::temp_directory_path() / ("raylab-texio-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    fs::remove_all(m_dir);
-    fs::create_directories(m_dir);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(m_dir, ec);
-  }
   std::string write(const std::string& name, const Bytes& bytes) {
-    const std::string path = (m_dir / name).string();
-    std::ofstream(path, std::ios::binary)
-        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    return path;
+    return test::write_bytes(m_dir.path() / name, bytes);
   }
   // Loads `path`, which must fail with an InputError naming it and containing `fragment`.
   static void expect_refused(const std::string& path, const std::string& fragment) {
@@ -122,7 +106,7 @@ class TextureIo : public ::testing::Test {
       EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
     }
   }
-  fs::path m_dir;
+  test::TempDir m_dir{"texio"};
 };
 
 void expect_color(Color got, Color want, float tolerance = 1e-6f) {
@@ -230,7 +214,7 @@ TEST_F(TextureIo, CorruptImage) {
   expect_refused(write("sig.png", {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'}), "not a valid PNG image");
 }
 
-TEST_F(TextureIo, MissingFile) { expect_refused((m_dir / "missing.png").string(), "cannot open"); }
+TEST_F(TextureIo, MissingFile) { expect_refused(m_dir.file("missing.png"), "cannot open"); }
 
 TEST_F(TextureIo, DecodeFromMemoryNamesTheElement) {
   const Bytes png = stb_png(1, 1, 3, {255, 255, 255});

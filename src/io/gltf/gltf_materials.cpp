@@ -1,0 +1,86 @@
+#include "gltf_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace raylab::gltf_detail {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Metallic/roughness onto Phong/Whitted, roughly (a Phong lobe cannot be a GGX lobe):
+//  - shininess: the Phong exponent whose lobe matches a Beckmann lobe of the same width,
+//    n = 2 / alpha^2 - 2 with alpha = roughness^2 (Walter et al. 2007), kept in [1, 10000];
+//  - ks = 1 - roughness: smooth surfaces show sharp, strong highlights, rough ones none;
+//  - reflectivity = metallic x (1 - roughness): smooth metals are mirrors, rough metals and all
+//    dielectrics are not (a Whitted mirror ray has no blur to offer them);
+//  - kd = 1 - reflectivity: what a mirror reflects it does not also scatter.
+void map_metallic_roughness(double metallic, double roughness, Material& out) {
+  const double alpha = roughness * roughness;
+  const double exponent = alpha > 0.0 ? 2.0 / (alpha * alpha) - 2.0 : 1e4;
+  out.shininess = static_cast<float>(std::clamp(exponent, 1.0, 1e4));
+  out.ks = static_cast<float>(1.0 - roughness);
+  out.reflectivity = static_cast<float>(metallic * (1.0 - roughness));
+  out.kd = 1.f - out.reflectivity;
+}
+
+// glTF's own default (white, fully metallic, fully rough) would render as a black shape with a
+// broad highlight in a Whitted tracer; raylab's matte default is what a user expects here.
+Material default_material() {
+  Material m;
+  m.name = "default";
+  return m;
+}
+
+}  // namespace
+
+std::uint32_t GltfReader::object_for(int index, const std::string& user) {
+  if (index != -1) check_index(index, m_model.materials.size(), user + ".material", "material");
+  const std::size_t slot = static_cast<std::size_t>(index + 1);
+  if (m_objects.empty()) {
+    m_objects.resize(m_model.materials.size() + 1);
+    m_uv_set.assign(m_model.materials.size() + 1, -1);
+  }
+  if (!m_objects[slot]) {
+    Material material = index == -1 ? default_material() : convert_material(index);
+    const std::string name = fs::path(m_path).stem().string() + "/" + material.name;
+    m_objects[slot] = m_scene.add_object(name, m_scene.add_material(std::move(material)));
+  }
+  return *m_objects[slot];
+}
+
+Material GltfReader::convert_material(int index) {
+  const std::string element = "materials[" + std::to_string(index) + "]";
+  const tinygltf::Material& in = m_model.materials[static_cast<std::size_t>(index)];
+  const tinygltf::PbrMetallicRoughness& pbr = in.pbrMetallicRoughness;
+  if (pbr.baseColorFactor.size() != 4 || !all_finite(pbr.baseColorFactor)) {
+    fail(element, "baseColorFactor must be 4 finite numbers");
+  }
+  if (in.emissiveFactor.size() != 3 || !all_finite(in.emissiveFactor))
+    fail(element, "emissiveFactor must be 3 finite numbers");
+  if (!std::isfinite(pbr.metallicFactor) || !std::isfinite(pbr.roughnessFactor)) {
+    fail(element, "metallicFactor and roughnessFactor must be finite");
+  }
+  Material out;
+  out.name = in.name.empty() ? element : in.name;
+  const auto& c = pbr.baseColorFactor;
+  out.color = {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
+  map_metallic_roughness(std::clamp(pbr.metallicFactor, 0.0, 1.0), std::clamp(pbr.roughnessFactor, 0.0, 1.0), out);
+  const auto& e = in.emissiveFactor;
+  out.emission = {static_cast<float>(e[0]), static_cast<float>(e[1]), static_cast<float>(e[2])};
+  // Blended alpha is see-through coverage: light passes straight on (ior 1), not refracted.
+  if (in.alphaMode == "BLEND") {
+    out.transmittance = static_cast<float>(1.0 - std::clamp(c[3], 0.0, 1.0));
+    out.ior = 1.f;
+  }
+  if (pbr.baseColorTexture.index != -1) {
+    const std::string texture_element = element + ".pbrMetallicRoughness.baseColorTexture";
+    out.texture = Texture::from_image(texture(pbr.baseColorTexture.index, texture_element));
+    if (pbr.baseColorTexture.texCoord < 0) fail(texture_element, "texCoord must be >= 0");
+    m_uv_set[static_cast<std::size_t>(index + 1)] = pbr.baseColorTexture.texCoord;
+  }
+  return out;
+}
+
+}  // namespace raylab::gltf_detail
