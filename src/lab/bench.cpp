@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -52,7 +51,7 @@ void parallel_chunks(std::size_t n, int threads, const Fn& fn) {
 
 template <class Fn>
 double seconds_of(const Fn& fn) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   fn();
   return seconds_since(start);
 }
