@@ -14,7 +14,7 @@
 #include "raylab/io/atomic_file.h"
 #include "raylab/io/ray_file.h"
 #include "raylab/io/scene_loader.h"
-#include "raylab/render/bench.h"
+#include "raylab/lab/bench.h"
 
 namespace raylab::cli {
 namespace {

@@ -13,10 +13,9 @@
 #include "commands.h"
 #include "raylab/core/error.h"
 #include "raylab/io/atomic_file.h"
-#include "raylab/io/heatmap.h"
 #include "raylab/io/scene_loader.h"
-#include "raylab/io/svg_chart.h"
-#include "raylab/render/accel_compare.h"
+#include "raylab/lab/accel_compare.h"
+#include "raylab/lab/compare_charts.h"
 
 namespace raylab::cli {
 namespace {

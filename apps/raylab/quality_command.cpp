@@ -14,11 +14,11 @@
 #include "raylab/accel/two_level.h"
 #include "raylab/core/error.h"
 #include "raylab/io/atomic_file.h"
-#include "raylab/io/line_chart.h"
-#include "raylab/io/quality_reference.h"
 #include "raylab/io/scene_loader.h"
+#include "raylab/lab/quality_chart.h"
+#include "raylab/lab/quality_reference.h"
+#include "raylab/lab/quality_study.h"
 #include "raylab/render/progress.h"
-#include "raylab/render/quality_study.h"
 #include "raylab/sampling/filter.h"
 
 namespace raylab::cli {

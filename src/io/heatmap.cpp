@@ -6,10 +6,8 @@
 #include <array>
 #include <cctype>
 #include <cmath>
-#include <filesystem>
-#include <system_error>
+#include <stdexcept>
 
-#include "raylab/core/error.h"
 #include "raylab/io/image_io.h"
 #include "raylab/render/film.h"
 
@@ -254,34 +252,6 @@ void write_png(const Rgb8Image& image, const std::string& path) {
     }
   }
   write_image(film, path);
-}
-
-std::vector<std::string> write_compare_heatmaps(const CompareResult& result, const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) {
-    throw InputError(dir, "cannot create the heat map folder: " + (ec ? ec.message() : "a file has that name"));
-  }
-  HeatScale tests, nodes;
-  tests.max_value = nodes.max_value = 0.0;
-  for (const AccelMeasure& m : result.accels) {
-    for (std::uint32_t v : m.pixel_tests) tests.max_value = std::max(tests.max_value, static_cast<double>(v));
-    for (std::uint32_t v : m.pixel_nodes) nodes.max_value = std::max(nodes.max_value, static_cast<double>(v));
-  }
-  std::vector<std::string> written;
-  for (const AccelMeasure& m : result.accels) {
-    if (m.skipped || !m.has_counts || m.pixel_tests.empty()) continue;
-    const std::string base = (std::filesystem::path(dir) / m.name).string();
-    const Rgb8Image t = render_heatmap(m.pixel_tests, result.width, result.height, tests,
-                                       m.name + ": primitive tests per pixel, log scale");
-    write_png(t, base + "-tests.png");
-    written.push_back(base + "-tests.png");
-    const Rgb8Image n = render_heatmap(m.pixel_nodes, result.width, result.height, nodes,
-                                       m.name + ": nodes or cells per pixel, log scale");
-    write_png(n, base + "-nodes.png");
-    written.push_back(base + "-nodes.png");
-  }
-  return written;
 }
 
 }  // namespace raylab

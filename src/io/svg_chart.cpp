@@ -134,29 +134,4 @@ std::string bar_chart_svg(std::string_view title, std::span<const BarPanel> pane
   return out + "</svg>\n";
 }
 
-std::string compare_chart_svg(const CompareResult& result, const std::string& scene_name) {
-  BarPanel speed{"Throughput", "Mrays/s", {}, {}, {}};
-  BarPanel build{"Build time", "milliseconds", {}, {"build"}, {}};
-  BarPanel memory{"Memory", "bytes per primitive", {}, {"memory"}, {}};
-  for (int k = 0; k < kBenchRayKinds; ++k) speed.series.emplace_back(bench_ray_kind_name(static_cast<BenchRayKind>(k)));
-  for (const AccelMeasure& m : result.accels) {
-    const std::string label = m.skipped ? m.name + " (skipped)" : m.name;
-    std::vector<double> rates;
-    for (const KindMeasure& k : m.kinds) rates.push_back(m.skipped || k.rays == 0 ? NAN : k.mrays_per_second);
-    for (BarPanel* p : {&speed, &build, &memory}) p->groups.push_back(label);
-    speed.values.push_back(rates);
-    build.values.push_back({m.skipped ? NAN : m.build_seconds * 1e3});
-    memory.values.push_back({m.skipped ? NAN : m.bytes_per_primitive});
-  }
-  const std::array<BarPanel, 3> panels = {speed, build, memory};
-  return bar_chart_svg(fmt::format("raylab compare: {} ({} primitives, {}x{})", scene_name, result.primitive_count,
-                                   result.width, result.height),
-                       panels);
-}
-
-void write_compare_chart(const CompareResult& result, const std::string& scene_name, const std::string& path) {
-  const std::string svg = compare_chart_svg(result, scene_name);
-  write_file_atomically(path, std::span(reinterpret_cast<const unsigned char*>(svg.data()), svg.size()));
-}
-
 }  // namespace raylab

@@ -1,6 +1,7 @@
 #pragma once
-// Internal to the render module: the two JSON value spellings the report writers need (the
-// comparison and the quality study write their JSON by hand; render must not depend on io).
+// Internal to the render module: the two JSON value spellings the SPD protocol's report needs
+// (it writes its JSON by hand: render must not depend on io; the lab's reports, a layer above,
+// use nlohmann-json).
 
 #include <fmt/format.h>
 

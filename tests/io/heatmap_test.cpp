@@ -12,6 +12,7 @@
 
 #include "raylab/core/error.h"
 #include "raylab/io/image_io.h"
+#include "raylab/lab/compare_charts.h"
 
 namespace raylab {
 namespace {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "raylab/core/error.h"
+#include "raylab/lab/compare_charts.h"
 
 namespace raylab {
 namespace {

@@ -10,8 +10,6 @@
 #include <string_view>
 #include <vector>
 
-#include "raylab/render/accel_compare.h"
-
 namespace raylab {
 
 /// An 8-bit sRGB colour.
@@ -92,11 +90,5 @@ void write_sample_count_png(std::span<const std::uint32_t> counts, int width, in
 
 /// Writes `image` as a PNG file, atomically.
 void write_png(const Rgb8Image& image, const std::string& path);
-
-/// Writes the heat maps of a comparison into `dir` (created if missing): for each structure
-/// that ran and counts its work, `<name>-tests.png` (primitive tests per primary ray) and
-/// `<name>-nodes.png` (nodes or cells visited), each kind on one scale shared by all
-/// structures. Returns the paths written. Throws InputError when the folder cannot be made.
-std::vector<std::string> write_compare_heatmaps(const CompareResult& result, const std::string& dir);
 
 }  // namespace raylab

@@ -7,8 +7,6 @@
 #include <string_view>
 #include <vector>
 
-#include "raylab/render/quality_study.h"
-
 namespace raylab {
 
 /// A point of a line.
@@ -41,12 +39,5 @@ std::string line_chart_svg(const LineChart& chart);
 
 /// Writes line_chart_svg to `path` atomically.
 void write_line_chart(const LineChart& chart, const std::string& path);
-
-/// The study as a chart: RMSE against primary rays per pixel, one line per sampler through its
-/// budgets; the title names the scene and the image size.
-LineChart quality_chart(const QualityResult& result, const std::string& scene_name);
-
-/// Writes the SVG of quality_chart to `path` atomically.
-void write_quality_chart(const QualityResult& result, const std::string& scene_name, const std::string& path);
 
 }  // namespace raylab

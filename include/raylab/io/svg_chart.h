@@ -1,13 +1,12 @@
 #pragma once
 /// \file
-/// SVG bar charts, written by hand (the format is text): used for the `raylab compare` plot.
+/// SVG bar charts, written by hand (the format is text): used for the `raylab compare` plot
+/// (lab/compare_charts.h).
 
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "raylab/render/accel_compare.h"
 
 namespace raylab {
 
@@ -25,13 +24,6 @@ struct BarPanel {
 /// lines, a legend of its series and the value above each bar. Text is XML-escaped. Each bar
 /// is a `<rect class="bar">`.
 std::string bar_chart_svg(std::string_view title, std::span<const BarPanel> panels);
-
-/// The comparison as a chart: Mrays/s per structure and ray kind, then build time per
-/// structure. Skipped structures keep their place with no bars and "(skipped)" in the label.
-std::string compare_chart_svg(const CompareResult& result, const std::string& scene_name);
-
-/// Writes compare_chart_svg to `path` atomically.
-void write_compare_chart(const CompareResult& result, const std::string& scene_name, const std::string& path);
 
 /// `text` with &, <, >, " and ' replaced by entities.
 std::string xml_escape(std::string_view text);

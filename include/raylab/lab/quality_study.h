@@ -3,8 +3,8 @@
 /// `raylab quality`: every pixel sampler at several sample budgets, rendered with several seeds
 /// and measured against one reference image — error against cost, side by side.
 ///
-/// This part renders and measures; reading, caching and writing the reference image is file
-/// work and lives in io/quality_reference.h, the chart in io/line_chart.h.
+/// This part renders and measures; reading, caching and writing the reference image is in
+/// lab/quality_reference.h, the chart in lab/quality_chart.h.
 
 #include <cstdint>
 #include <functional>
@@ -60,7 +60,7 @@ struct QualityOptions {
   /// Folder of cached auto references; empty: render every time, cache nothing.
   std::string cache_dir;
   /// Identifies the scene source in the cache key (the command: the scene as named plus a hash
-  /// of the file's bytes when it is a file; see scene_source_key in io/quality_reference.h).
+  /// of the file's bytes when it is a file; see scene_source_key in lab/quality_reference.h).
   std::string reference_key;
   int threads = 0;              ///< worker threads; 0 = all cores
   QualityProgress on_progress;  ///< may be empty

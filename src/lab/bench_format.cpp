@@ -4,14 +4,13 @@
 
 #include <string>
 
-#include "json_text.h"
-#include "raylab/render/bench.h"
+#include "raylab/lab/bench.h"
+#include "report_json.h"
 
 namespace raylab {
 namespace {
 
-using detail::json_number;
-using detail::json_string;
+using detail::ReportJson;
 
 // One table row: label, rays (0: none), both figures and the ratio; Embree columns blank when
 // it was not measured. `digits` decimals.
@@ -27,15 +26,15 @@ std::string agreement_text(const BenchAgreement& a) {
                      a.disagreements);
 }
 
-std::string figure_json(const BenchFigure& f, bool embree) {
-  return fmt::format("{{\"ours\": {}, \"embree\": {}, \"ratio\": {}}}", json_number(f.ours),
-                     embree ? json_number(f.embree) : "null",
-                     embree && f.embree > 0.0 ? json_number(f.ratio()) : "null");
+// Both sides of a figure and their ratio; Embree's side and the ratio null when not measured.
+ReportJson figure_json(const BenchFigure& f, bool embree) {
+  return {{"ours", f.ours},
+          {"embree", embree ? ReportJson(f.embree) : ReportJson(nullptr)},
+          {"ratio", embree && f.embree > 0.0 ? ReportJson(f.ratio()) : ReportJson(nullptr)}};
 }
 
-std::string agreement_json(const BenchAgreement& a) {
-  return fmt::format("{{\"same\": {}, \"ties\": {}, \"embree_cracks\": {}, \"disagreements\": {}}}", a.same, a.ties,
-                     a.embree_cracks, a.disagreements);
+ReportJson agreement_json(const BenchAgreement& a) {
+  return {{"same", a.same}, {"ties", a.ties}, {"embree_cracks", a.embree_cracks}, {"disagreements", a.disagreements}};
 }
 
 }  // namespace
@@ -67,33 +66,38 @@ std::string format_bench_table(const BenchReport& r, const std::string& scene_na
 }
 
 std::string format_bench_json(const BenchReport& r, const std::string& scene_name) {
-  std::string out = fmt::format(
-      "{{\n  \"scene\": {},\n  \"accel\": {},\n  \"primitives\": {},\n  \"triangles\": {},\n  \"user_primitives\": "
-      "{},\n  \"width\": {},\n  \"height\": {},\n  \"threads\": {},\n  \"repeats\": {},\n  \"embree\": {},\n",
-      json_string(scene_name), json_string(r.accel), r.primitives, r.triangles, r.user_primitives, r.width, r.height,
-      r.threads, r.repeats, r.embree ? "true" : "false");
   const Vec3 p = r.light.position;
-  out += fmt::format("  \"light\": {{\"position\": [{}, {}, {}], \"from_scene\": {}}},\n", json_number(p.x),
-                     json_number(p.y), json_number(p.z), r.light_from_scene ? "true" : "false");
-  out += fmt::format("  \"build_ms\": {},\n  \"build_mprims_per_s\": {},\n  \"bytes_per_triangle\": {},\n",
-                     figure_json(r.build_ms, r.embree), figure_json(r.build_mprims, r.embree),
-                     figure_json(r.bytes_per_triangle, r.embree));
-  out += fmt::format("  \"sah_cost\": {},\n  \"sets\": [", figure_json(r.sah_cost, r.embree));
-  for (std::size_t i = 0; i < r.sets.size(); ++i) {
-    const BenchSetReport& s = r.sets[i];
-    out += fmt::format(
-        "{}\n    {{\"name\": {}, \"query\": \"{}\", \"rays\": {}, \"answered\": {},\n     \"single\": "
-        "{{\"mrays_per_s\": "
-        "{}, \"agreement\": {}}}",
-        i ? "," : "", json_string(s.name), s.closest ? "closest" : "any", s.rays, s.answered,
-        figure_json(s.single_mrays, r.embree), r.embree ? agreement_json(s.single) : "null");
-    out += s.packets ? fmt::format(",\n     \"packet16\": {{\"mrays_per_s\": {}, \"agreement\": {}}}}}",
-                                   figure_json(s.packet_mrays, r.embree), agreement_json(s.packet))
-                     : ",\n     \"packet16\": null}";
+  ReportJson doc = {{"scene", scene_name},
+                    {"accel", r.accel},
+                    {"primitives", r.primitives},
+                    {"triangles", r.triangles},
+                    {"user_primitives", r.user_primitives},
+                    {"width", r.width},
+                    {"height", r.height},
+                    {"threads", r.threads},
+                    {"repeats", r.repeats},
+                    {"embree", r.embree}};
+  doc["light"] = {{"position", {p.x, p.y, p.z}}, {"from_scene", r.light_from_scene}};
+  doc["build_ms"] = figure_json(r.build_ms, r.embree);
+  doc["build_mprims_per_s"] = figure_json(r.build_mprims, r.embree);
+  doc["bytes_per_triangle"] = figure_json(r.bytes_per_triangle, r.embree);
+  doc["sah_cost"] = figure_json(r.sah_cost, r.embree);
+  ReportJson& sets = doc["sets"] = ReportJson::array();
+  for (const BenchSetReport& s : r.sets) {
+    ReportJson set = {{"name", s.name},
+                      {"query", s.closest ? "closest" : "any"},
+                      {"rays", s.rays},
+                      {"answered", s.answered},
+                      {"single",
+                       {{"mrays_per_s", figure_json(s.single_mrays, r.embree)},
+                        {"agreement", r.embree ? agreement_json(s.single) : ReportJson(nullptr)}}}};
+    set["packet16"] = s.packets ? ReportJson{{"mrays_per_s", figure_json(s.packet_mrays, r.embree)},
+                                             {"agreement", agreement_json(s.packet)}}
+                                : ReportJson(nullptr);
+    sets.push_back(std::move(set));
   }
-  out += "\n  ],\n  \"notes\": [";
-  for (std::size_t i = 0; i < r.notes.size(); ++i) out += (i ? ", " : "") + json_string(r.notes[i]);
-  return out + "]\n}\n";
+  doc["notes"] = r.notes;
+  return detail::report_text(doc);
 }
 
 }  // namespace raylab

@@ -1,7 +1,7 @@
 // The ray sets of `raylab compare`: primary rays through pixel centres, shadow rays that end at
 // the light, cosine-weighted diffuse rays on the viewer's side, all independent of threads.
 
-#include "raylab/render/ray_sets.h"
+#include "raylab/lab/ray_sets.h"
 
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>

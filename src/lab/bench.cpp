@@ -1,8 +1,7 @@
 // `raylab bench`, the measuring half: builds, ray sets, agreement, interleaved timings. The
 // table and JSON are in bench_format.cpp.
 
-#include "raylab/render/bench.h"
-#include "raylab/core/stopwatch.h"
+#include "raylab/lab/bench.h"
 
 #include <fmt/format.h>
 #include <tbb/global_control.h>
@@ -10,7 +9,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -23,12 +21,14 @@
 #include "raylab/accel/embree_reference.h"
 #include "raylab/accel/wide_bvh.h"
 #include "raylab/core/error.h"
+#include "raylab/core/stopwatch.h"
+#include "raylab/lab/hit_agreement.h"
 
 namespace raylab {
 namespace {
 
-constexpr double kRelTol = 1e-4;      // relative tolerance on t between the two tracers (the issue's)
-constexpr std::size_t kChunk = 1024;  // rays per work item of the timed loops: a multiple of 16
+constexpr double kRelTol = kHitDistanceTolerance;  // relative tolerance on t between the two tracers
+constexpr std::size_t kChunk = 1024;               // rays per work item of the timed loops: a multiple of 16
 constexpr std::size_t kPacket = 16;
 constexpr std::size_t kKeep = 5;  // disagreements described per set
 
@@ -51,7 +51,7 @@ void parallel_chunks(std::size_t n, int threads, const Fn& fn) {
 
 template <class Fn>
 double seconds_of(const Fn& fn) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   fn();
   return seconds_since(start);
 }
@@ -108,15 +108,9 @@ void trace(const EmbreeReference& ref, std::span<const Ray> rays, std::span<std:
   });
 }
 
-// Distances agree within kRelTol relative, or within the rounding of positions near the ray's
-// origin: a ray leaving a surface can meet its own or a neighbouring triangle at t ~ 1e-6, where
-// two correct float tests differ by far more than 1e-4 of t (but by less than 16 ulps of the
-// origin's coordinates).
-bool close(double a, double b, const Ray& ray) {
-  const double origin_scale =
-      std::max({std::fabs(ray.origin.x), std::fabs(ray.origin.y), std::fabs(ray.origin.z)}) * std::ldexp(16.0, -24);
-  return std::fabs(a - b) <= std::max(kRelTol * std::max(std::fabs(a), std::fabs(b)), origin_scale);
-}
+// Distances agree by the lab's rule: within the relative tolerance, or within the rounding of
+// positions near the ray's origin (hit_agreement.h says why).
+bool close(double a, double b, const Ray& ray) { return distances_agree(a, b, kRelTol, origin_slack(ray)); }
 
 // Distance along `ray` to primitive `prim` by our own test, ignoring tmax; for a triangle whose
 // watertight test rejects the point (an edge its neighbour owns), the distance to its plane;
@@ -142,21 +136,22 @@ std::string hit_text(const Hit& h) {
   return h.valid() ? fmt::format("t {} prim {}", h.t, h.prim_id) : std::string("miss");
 }
 
-// Our closest hits against the other side's, ray by ray. Different primitives at the same t are a
-// tie when the other side's primitive, tested by our own shape test, lies at that t too (shared
-// edges, coplanar faces). A different t or hit/miss is an Embree edge crack when Embree's robust
-// scene answers as we do; anything else is a disagreement. `robust` may be null (no Embree).
+// Our closest hits against the other side's, ray by ray, by the lab's rule (match_hits). A tie
+// (different primitives at the same t) counts when the other side's primitive, tested by our own
+// shape test, lies at that t too (shared edges, coplanar faces). A different t or hit/miss is an Embree edge crack when
+// Embree's robust scene answers as we do; anything else is a disagreement. `robust` may be null (no Embree).
 BenchAgreement check_closest(const Geometry& g, std::span<const Ray> rays, std::span<const Hit> ours,
                              std::span<const Hit> other, EmbreeReference* robust, const char* other_name) {
   BenchAgreement a;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     const Hit &o = ours[i], &e = other[i];
-    auto same_t = [&](const Hit& x) { return o.valid() == x.valid() && (!o.valid() || close(o.t, x.t, rays[i])); };
-    if (same_t(e)) {
-      if (!o.valid() || o.prim_id == e.prim_id) {
-        ++a.same;
-        continue;
-      }
+    const double slack = origin_slack(rays[i]);
+    const HitMatch match = match_hits(o, e, kRelTol, slack);
+    if (match == HitMatch::kSame) {
+      ++a.same;
+      continue;
+    }
+    if (match == HitMatch::kTie) {
       if (close(o.t, t_of(g, rays[i], e.prim_id), rays[i])) {
         ++a.ties;
         continue;
@@ -165,7 +160,7 @@ BenchAgreement check_closest(const Geometry& g, std::span<const Ray> rays, std::
       robust->build_robust();
       Hit r;
       robust->intersect1(rays.subspan(i, 1), std::span(&r, 1), true);
-      if (same_t(r)) {
+      if (match_hits(o, r, kRelTol, slack) != HitMatch::kDifferent) {
         ++a.embree_cracks;
         continue;
       }

@@ -17,7 +17,7 @@
 
 #include "raylab/accel/factory.h"
 #include "raylab/core/ray.h"
-#include "raylab/render/ray_sets.h"
+#include "raylab/lab/ray_sets.h"
 #include "raylab/scene/light.h"
 #include "raylab/scene/scene.h"
 

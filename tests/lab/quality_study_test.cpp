@@ -2,7 +2,7 @@
 // measures zero for it, the plan (seeds, budgets) follows the samplers' nature, and auto
 // references are cached under a key that changes with what changes the image.
 
-#include "raylab/render/quality_study.h"
+#include "raylab/lab/quality_study.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -16,8 +16,8 @@
 #include "raylab/accel/two_level.h"
 #include "raylab/core/error.h"
 #include "raylab/io/image_io.h"
-#include "raylab/io/quality_reference.h"
 #include "raylab/io/scene_loader.h"
+#include "raylab/lab/quality_reference.h"
 #include "raylab/render/renderer.h"
 #include "raylab/sampling/pixel_sampler.h"
 

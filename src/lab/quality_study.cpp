@@ -1,4 +1,7 @@
-#include "raylab/render/quality_study.h"
+// `raylab quality`, the measuring half: options, the renders of every sampler and budget, the
+// error measures, the bar ratios. The table, CSV and JSON are in quality_format.cpp.
+
+#include "raylab/lab/quality_study.h"
 
 #include <fmt/format.h>
 
@@ -9,20 +12,17 @@
 #include <limits>
 #include <numeric>
 
-#include "json_text.h"
 #include "median.h"
 #include "raylab/core/error.h"
 #include "raylab/core/hash64.h"
+#include "raylab/lab/image_metrics.h"
 #include "raylab/render/adaptive.h"
-#include "raylab/render/image_metrics.h"
 #include "raylab/render/renderer.h"
 #include "raylab/sampling/pixel_sampler.h"
 
 namespace raylab {
 namespace {
 
-using detail::json_number;
-using detail::json_string;
 using detail::median;
 
 constexpr int kMaxBudget = 1 << 16;
@@ -61,8 +61,6 @@ struct PlannedRender {
   int seed = 0;
   double weight = 1.0;
 };
-
-std::string psnr_text(double v) { return std::isfinite(v) ? fmt::format("{:.2f}", v) : "inf"; }
 
 }  // namespace
 
@@ -331,73 +329,6 @@ std::optional<BarRatios> bar_ratios(const QualityResult& result, std::string_vie
     break;
   }
   return r;
-}
-
-std::string format_bar_ratios(const BarRatios& r) {
-  return fmt::format(
-      "{} (budget {}) vs {} at {} spp: primary rays x{:.3f}, RMSE x{:.3f}, p99.9 x{:.3f}, time x{:.3f}, time at "
-      "equal RMSE x{:.3f}",
-      r.sampler, r.budget, r.baseline, r.baseline_budget, r.rays, r.rmse, r.p999, r.time, r.time_at_equal_rmse);
-}
-
-std::string format_quality_table(const QualityResult& result, const std::string& scene_name) {
-  std::size_t name_width = 8;
-  for (const QualityRow& r : result.rows) name_width = std::max(name_width, r.sampler.size());
-  const int nw = static_cast<int>(name_width) + 2;
-  std::string out = fmt::format(
-      "scene {}: {}x{}, filter {}{}, depth {}; up to {} seeds per row (center, regular, adaptive-corners: one)\n",
-      scene_name, result.width, result.height, result.filter,
-      result.filter_radius > 0.f ? fmt::format(" (radius {:g})", result.filter_radius) : "", result.max_depth,
-      result.seeds);
-  out += fmt::format("reference: {}\n", result.reference.empty() ? "(given)" : result.reference);
-  out += "RMSE of linear RGB (mean and min..max over seeds); PSNR and SSIM on sRGB; p99.9: pixel error percentile;\n";
-  out += "rays/px: primary rays per pixel (mean); time: median render time\n";
-  out += fmt::format("{:<{}}{:>7}{:>6}{:>9}{:>10}{:>11}{:>23}{:>9}{:>8}{:>10}\n", "sampler", nw, "budget", "spp",
-                     "rays/px", "time s", "RMSE", "RMSE min..max", "PSNR dB", "SSIM", "p99.9");
-  for (const QualityRow& r : result.rows) {
-    out += fmt::format("{:<{}}{:>7}{:>6}{:>9.2f}{:>10.4f}{:>11.5f}{:>23}{:>9}{:>8.4f}{:>10.5f}\n", r.sampler, nw,
-                       r.budget, r.spp, r.rays_per_pixel, r.seconds, r.rmse,
-                       fmt::format("{:.5f}..{:.5f}", r.rmse_min, r.rmse_max), psnr_text(r.psnr), r.ssim, r.p999);
-  }
-  return out;
-}
-
-std::string format_quality_csv(const QualityResult& result) {
-  std::string out =
-      "sampler,budget,spp,seeds,rays_per_pixel,seconds,rmse,rmse_min,rmse_max,rmse_stddev,psnr_db,ssim,p999\n";
-  for (const QualityRow& r : result.rows) {
-    out += fmt::format("{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{:.6g},{:.6g}\n", r.sampler, r.budget,
-                       r.spp, r.seeds, r.rays_per_pixel, r.seconds, r.rmse, r.rmse_min, r.rmse_max, r.rmse_stddev,
-                       std::isfinite(r.psnr) ? fmt::format("{:.6g}", r.psnr) : "inf", r.ssim, r.p999);
-  }
-  return out;
-}
-
-std::string format_quality_json(const QualityResult& result, const std::string& scene_name) {
-  std::string out = fmt::format(
-      "{{\n  \"scene\": {},\n  \"width\": {},\n  \"height\": {},\n  \"filter\": {},\n  \"filter_radius\": {},\n"
-      "  \"max_depth\": {},\n  \"seeds\": {},\n  \"reference\": {},\n  \"rows\": [",
-      json_string(scene_name), result.width, result.height, json_string(result.filter),
-      json_number(result.filter_radius), result.max_depth, result.seeds, json_string(result.reference));
-  for (std::size_t i = 0; i < result.rows.size(); ++i) {
-    const QualityRow& r = result.rows[i];
-    out += fmt::format(
-        "{}\n    {{\"sampler\": {}, \"budget\": {}, \"spp\": {}, \"seeds\": {}, \"rays_per_pixel\": {}, "
-        "\"seconds\": {}, \"rmse\": {}, \"rmse_min\": {}, \"rmse_max\": {}, \"rmse_stddev\": {}, \"psnr_db\": {}, "
-        "\"ssim\": {}, \"p999\": {}}}",
-        i ? "," : "", json_string(r.sampler), r.budget, r.spp, r.seeds, json_number(r.rays_per_pixel),
-        json_number(r.seconds), json_number(r.rmse), json_number(r.rmse_min), json_number(r.rmse_max),
-        json_number(r.rmse_stddev), json_number(r.psnr), json_number(r.ssim), json_number(r.p999));
-  }
-  out += "\n  ]";
-  if (const std::optional<BarRatios> b = bar_ratios(result)) {
-    out += fmt::format(
-        ",\n  \"bar\": {{\"sampler\": {}, \"baseline\": {}, \"budget\": {}, \"rays_ratio\": {}, \"rmse_ratio\": {}, "
-        "\"p999_ratio\": {}, \"time_ratio\": {}, \"time_at_equal_rmse_ratio\": {}, \"baseline_budget\": {}}}",
-        json_string(b->sampler), json_string(b->baseline), b->budget, json_number(b->rays), json_number(b->rmse),
-        json_number(b->p999), json_number(b->time), json_number(b->time_at_equal_rmse), b->baseline_budget);
-  }
-  return out + "\n}\n";
 }
 
 }  // namespace raylab

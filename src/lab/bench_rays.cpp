@@ -5,7 +5,7 @@
 #include <string>
 
 #include "raylab/core/error.h"
-#include "raylab/render/bench.h"
+#include "raylab/lab/bench.h"
 #include "raylab/render/camera.h"
 
 namespace raylab {

@@ -1,6 +1,6 @@
 // Image error measures against analytic answers and brute-force references.
 
-#include "raylab/render/image_metrics.h"
+#include "raylab/lab/image_metrics.h"
 
 #include <gtest/gtest.h>
 

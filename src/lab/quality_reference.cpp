@@ -1,4 +1,4 @@
-#include "raylab/io/quality_reference.h"
+#include "raylab/lab/quality_reference.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "raylab/render/ray_sets.h"
+#include "raylab/lab/ray_sets.h"
 
 #include <tbb/parallel_for.h>
 
@@ -85,17 +85,10 @@ void compact(const std::vector<Ray>& slots, const std::vector<std::uint8_t>& use
 }  // namespace
 
 const char* bench_ray_kind_name(BenchRayKind kind) {
-  switch (kind) {
-    case BenchRayKind::kPrimary:
-      return "primary";
-    case BenchRayKind::kShadow:
-      return "shadow";
-    case BenchRayKind::kDiffuse:
-      return "diffuse";
-    case BenchRayKind::kCount:
-      break;
-  }
-  return "?";
+  // A table, indexed by BenchRayKind: the names are data, not a switch to keep in step.
+  static constexpr const char* kNames[kBenchRayKinds] = {"primary", "shadow", "diffuse"};
+  const int k = static_cast<int>(kind);
+  return k >= 0 && k < kBenchRayKinds ? kNames[k] : "?";
 }
 
 std::size_t RaySets::total_rays() const {

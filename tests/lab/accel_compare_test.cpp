@@ -1,7 +1,7 @@
 // `raylab compare` in the library: the measurements are sane, a wrong structure is caught with
 // the rays it gets wrong, brute force is skipped when too slow, and the reports say so.
 
-#include "raylab/render/accel_compare.h"
+#include "raylab/lab/accel_compare.h"
 
 #include <gtest/gtest.h>
 

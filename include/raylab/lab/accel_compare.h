@@ -11,7 +11,8 @@
 
 #include "raylab/accel/accelerator.h"
 #include "raylab/accel/two_level.h"
-#include "raylab/render/ray_sets.h"
+#include "raylab/lab/hit_agreement.h"
+#include "raylab/lab/ray_sets.h"
 #include "raylab/scene/scene.h"
 
 namespace raylab {
@@ -26,10 +27,11 @@ struct CompareOptions {
   RaySetOptions rays;
   /// The structure whose primary hits spawn the shadow and diffuse rays (built untimed).
   std::string ray_source = "bvh";
-  int threads = 0;                                      ///< worker threads; 0 = all cores
-  int repeat = 3;                                       ///< timed passes per ray kind; the median is reported
-  double brute_limit_seconds = 60.0;                    ///< brute force is skipped when estimated slower than this
-  float t_tolerance = 1e-4f;                            ///< relative distance within which two different hits agree
+  int threads = 0;                    ///< worker threads; 0 = all cores
+  int repeat = 3;                     ///< timed passes per ray kind; the median is reported
+  double brute_limit_seconds = 60.0;  ///< brute force is skipped when estimated slower than this
+  float t_tolerance =
+      static_cast<float>(kHitDistanceTolerance);        ///< relative distance within which two different hits agree
   std::size_t mismatches_kept = 5;                      ///< disagreeing rays kept per structure (all are counted)
   std::function<void(const std::string&)> on_progress;  ///< one line per step, for a log
 };
@@ -114,12 +116,9 @@ struct RayAnswers {
 /// Traces every ray of `sets` through `accel` (in parallel) and keeps the answers.
 RayAnswers trace_answers(const Accelerator& accel, const RaySets& sets);
 
-/// True when two closest-hit answers agree: both miss, or both hit the same primitive, or both
-/// hit at distances within `tolerance` relative (exact ties, and tracers that round differently).
-bool hits_agree(const Hit& a, const Hit& b, float tolerance);
-
-/// Compares `found` with `expected` ray by ray; returns how many rays disagree and appends the
-/// first `keep` of them to `out`.
+/// Compares `found` with `expected` ray by ray by the lab's one rule (match_hits, with the ray's
+/// origin_slack; shadow rays by their occlusion); returns how many rays disagree and appends
+/// the first `keep` of them to `out`.
 std::size_t find_mismatches(const RaySets& sets, const RayAnswers& expected, const RayAnswers& found, float tolerance,
                             std::size_t keep, std::vector<Mismatch>& out);
 

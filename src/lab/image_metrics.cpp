@@ -1,4 +1,4 @@
-#include "raylab/render/image_metrics.h"
+#include "raylab/lab/image_metrics.h"
 
 #include <algorithm>
 #include <array>

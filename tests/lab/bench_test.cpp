@@ -2,7 +2,7 @@
 // light), agreement with Embree on every kind (when built with it), the counts, the JSON, and a
 // planted wrong answer that must make it fail.
 
-#include "raylab/render/bench.h"
+#include "raylab/lab/bench.h"
 
 #include <gtest/gtest.h>
 

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "raylab/accel/accelerator.h"
+#include "raylab/lab/quality_study.h"
 #include "raylab/render/film.h"
-#include "raylab/render/quality_study.h"
 #include "raylab/scene/scene.h"
 
 namespace raylab {
