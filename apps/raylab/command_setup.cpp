@@ -1,5 +1,10 @@
 #include "command_setup.h"
 
+#include <fmt/core.h>
+
+#include "raylab/core/error.h"
+#include "raylab/io/atomic_file.h"
+
 namespace raylab::cli {
 
 void add_scene_argument(CLI::App& cmd, std::string& scene) {
@@ -8,6 +13,21 @@ void add_scene_argument(CLI::App& cmd, std::string& scene) {
 
 void add_threads_option(CLI::App& cmd, int& threads, const std::string& description) {
   cmd.add_option("--threads", threads, description)->check(CLI::Range(0, 1024))->capture_default_str();
+}
+
+void check_table_outputs(const std::string& csv, const std::string& json, const std::string& plot) {
+  if (!plot.empty() && !plot.ends_with(".svg")) {
+    throw UsageError("cannot write '" + plot + "': the plot is an SVG file (.svg)");
+  }
+  for (const std::string* path : {&csv, &json, &plot}) {
+    if (!path->empty()) check_writable(*path);  // fail before the work, not after it
+  }
+}
+
+void print_written(std::initializer_list<const std::string*> paths) {
+  for (const std::string* path : paths) {
+    if (!path->empty()) fmt::print(stderr, "wrote {}\n", *path);
+  }
 }
 
 void add_allow_outside_paths_flag(CLI::App& cmd, bool& allow) {

@@ -27,6 +27,13 @@ void add_scene_argument(CLI::App& cmd, std::string& scene);
 /// Adds --threads (0 to 1024, 0 = all cores), described by `description`.
 void add_threads_option(CLI::App& cmd, int& threads, const std::string& description = "Worker threads; 0 = all cores");
 
+/// Usage and input errors about the table outputs of compare and quality, before the work: a
+/// --plot that is not .svg, a --csv, --json or --plot that cannot be written (empty: not asked).
+void check_table_outputs(const std::string& csv, const std::string& json, const std::string& plot);
+
+/// Prints "wrote PATH" on stderr for each of `paths` that is not empty.
+void print_written(std::initializer_list<const std::string*> paths);
+
 /// Adds --allow-outside-paths: a scene file may reference files outside its own folder.
 void add_allow_outside_paths_flag(CLI::App& cmd, bool& allow);
 
