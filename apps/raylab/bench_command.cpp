@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "accel_options.h"
+#include "command_setup.h"
 #include "commands.h"
 #include "raylab/core/error.h"
 #include "raylab/io/atomic_file.h"
@@ -102,49 +103,48 @@ int run(const BenchArgs& args) {
   return 0;
 }
 
+void add_options(CLI::App& cmd, BenchArgs& args) {
+  add_scene_argument(cmd, args.scene);
+  CLI::Option* rays = cmd.add_option("--rays", args.rays, "Ray kinds to trace")
+                          ->check(CLI::IsMember({"primary", "shadow", "diffuse", "all"}))
+                          ->capture_default_str();
+  add_threads_option(cmd, args.threads, "Threads for both sides (builds and tracing); 0 = all cores");
+  cmd.add_option("--against", args.against, "Reference tracer: embree, or none for our figures only")
+      ->check(CLI::IsMember({"embree", "none"}))
+      ->capture_default_str();
+  cmd.add_option("--repeats", args.repeats, "Timed runs of each figure; the median is reported")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd.add_option("--width", args.width, "Primary rays per row")->check(CLI::Range(1, 16384))->capture_default_str();
+  cmd.add_option("--height", args.height, "Rows of primary rays")->check(CLI::Range(1, 16384))->capture_default_str();
+  cmd.add_option("--accel", args.accel, "Our acceleration structure")
+      ->check(CLI::IsMember(accelerator_choices()))
+      ->capture_default_str();
+  cmd.add_option("--embree-isa", args.embree_isa,
+                 "Embree's kernels: best (Embree's choice for this CPU), or restricted to sse2, sse4.2, avx, avx2 "
+                 "or avx512, e.g. to match the instruction set raylab was built for")
+      ->check(CLI::IsMember({"best", "sse2", "sse4.2", "avx", "avx2", "avx512"}))
+      ->capture_default_str();
+  cmd.add_flag("--bvh-spatial-splits", args.spatial_splits,
+               "Build our BVH with spatial splits (SBVH) too; Embree stays at its medium quality");
+  cmd.add_option("--rays-file", args.rays_file,
+                 "Trace the rays of this .rays file (closest hit, singles and packets) instead of generated ones")
+      ->excludes(rays);
+  cmd.add_option("--rays-out", args.rays_out, "Write the rays of the last traced set as a .rays file");
+  cmd.add_option("--hits-out", args.hits_out, "Write our closest hits of the last traced set as a .hits file");
+  cmd.add_option("--json", args.json, "Also write the results as JSON to this file ('-': stdout)");
+  add_allow_outside_paths_flag(cmd, args.allow_outside_paths);
+  cmd.add_flag("-q,--quiet", args.quiet, "No progress lines on stderr");
+}
+
 }  // namespace
 
 CommandRunner add_bench_command(CLI::App& app) {
-  auto args = std::make_shared<BenchArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "bench",
+  return add_command<BenchArgs>(
+      app, "bench",
       "Our accelerator against Embree 3 on the same rays: agreement, single-ray and packet Mrays/s, build speed, "
-      "memory and SAH cost, each with the ratio ours/Embree");
-  cmd->add_option("scene", args->scene, "Scene: a built-in name, an SPD generator (spd:balls) or a file")->required();
-  CLI::Option* rays = cmd->add_option("--rays", args->rays, "Ray kinds to trace")
-                          ->check(CLI::IsMember({"primary", "shadow", "diffuse", "all"}))
-                          ->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Threads for both sides (builds and tracing); 0 = all cores")
-      ->check(CLI::Range(0, 1024))
-      ->capture_default_str();
-  cmd->add_option("--against", args->against, "Reference tracer: embree, or none for our figures only")
-      ->check(CLI::IsMember({"embree", "none"}))
-      ->capture_default_str();
-  cmd->add_option("--repeats", args->repeats, "Timed runs of each figure; the median is reported")
-      ->check(CLI::Range(1, 1000))
-      ->capture_default_str();
-  cmd->add_option("--width", args->width, "Primary rays per row")->check(CLI::Range(1, 16384))->capture_default_str();
-  cmd->add_option("--height", args->height, "Rows of primary rays")->check(CLI::Range(1, 16384))->capture_default_str();
-  cmd->add_option("--accel", args->accel, "Our acceleration structure")
-      ->check(CLI::IsMember(accelerator_choices()))
-      ->capture_default_str();
-  cmd->add_option("--embree-isa", args->embree_isa,
-                  "Embree's kernels: best (Embree's choice for this CPU), or restricted to sse2, sse4.2, avx, avx2 "
-                  "or avx512, e.g. to match the instruction set raylab was built for")
-      ->check(CLI::IsMember({"best", "sse2", "sse4.2", "avx", "avx2", "avx512"}))
-      ->capture_default_str();
-  cmd->add_flag("--bvh-spatial-splits", args->spatial_splits,
-                "Build our BVH with spatial splits (SBVH) too; Embree stays at its medium quality");
-  cmd->add_option("--rays-file", args->rays_file,
-                  "Trace the rays of this .rays file (closest hit, singles and packets) instead of generated ones")
-      ->excludes(rays);
-  cmd->add_option("--rays-out", args->rays_out, "Write the rays of the last traced set as a .rays file");
-  cmd->add_option("--hits-out", args->hits_out, "Write our closest hits of the last traced set as a .hits file");
-  cmd->add_option("--json", args->json, "Also write the results as JSON to this file ('-': stdout)");
-  cmd->add_flag("--allow-outside-paths", args->allow_outside_paths,
-                "Let a scene file reference files outside its own folder");
-  cmd->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
-  return [args] { return run(*args); };
+      "memory and SAH cost, each with the ratio ours/Embree",
+      add_options, run);
 }
 
 }  // namespace raylab::cli

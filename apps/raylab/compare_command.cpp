@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "accel_options.h"
+#include "command_setup.h"
 #include "commands.h"
 #include "raylab/core/error.h"
 #include "raylab/io/atomic_file.h"
@@ -48,12 +49,7 @@ void image_size(const CompareArgs& args, const RenderSettings& s, RaySetOptions&
 }
 
 int run(const CompareArgs& args) {
-  if (!args.plot.empty() && !args.plot.ends_with(".svg")) {
-    throw UsageError("cannot write '" + args.plot + "': the plot is an SVG file (.svg)");
-  }
-  for (const std::string* path : {&args.csv, &args.json, &args.plot}) {
-    if (!path->empty()) check_writable(*path);  // fail before the work, not after it
-  }
+  check_table_outputs(args.csv, args.json, args.plot);
   CompareOptions options;
   options.accels = args.accels;
   options.structure = args.accel.options;
@@ -82,9 +78,7 @@ int run(const CompareArgs& args) {
   std::vector<std::string> written;
   if (!args.heatmaps.empty()) written = write_compare_heatmaps(result, args.heatmaps);
   if (!args.quiet) {
-    for (const std::string* path : {&args.csv, &args.json, &args.plot}) {
-      if (!path->empty()) fmt::print(stderr, "wrote {}\n", *path);
-    }
+    print_written({&args.csv, &args.json, &args.plot});
     for (const std::string& path : written) fmt::print(stderr, "wrote {}\n", path);
   }
   if (!result.agreed()) {
@@ -94,47 +88,45 @@ int run(const CompareArgs& args) {
   return 0;
 }
 
+void add_options(CLI::App& cmd, CompareArgs& args) {
+  add_scene_argument(cmd, args.scene);
+  std::string names;
+  for (const std::string& n : args.accels) names += (names.empty() ? "" : ",") + n;
+  cmd.add_option("--accels", args.accels,
+                 "Structures to compare, comma-separated, in table order (default: " + names + ")")
+      ->delimiter(',')
+      ->check(CLI::IsMember(accelerator_choices()));
+  cmd.add_option("--width", args.width, "Primary rays per row (default 512)")->check(CLI::Range(1, 16384));
+  cmd.add_option("--height", args.height, "Rows of primary rays (default: from the scene's aspect ratio)")
+      ->check(CLI::Range(1, 16384));
+  add_threads_option(cmd, args.threads);
+  cmd.add_option("--repeat", args.repeat, "Timed passes per ray kind; the median is reported")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd.add_option("--seed", args.seed, "Seed of the light samples and bounce directions")
+      ->check([](const std::string& v) { return v.starts_with('-') ? "the seed must not be negative" : ""; })
+      ->capture_default_str();
+  cmd.add_option("--brute-limit", args.brute_limit, "Skip brute force when its estimated time exceeds this (seconds)")
+      ->check(CLI::Range(0.0, 1e9))
+      ->capture_default_str();
+  add_accel_parameter_options(cmd, args.accel);
+  cmd.add_option("--csv", args.csv, "Also write the table as CSV to this file");
+  cmd.add_option("--json", args.json, "Also write the table as JSON to this file");
+  cmd.add_option("--heatmaps", args.heatmaps,
+                 "Write DIR/<structure>-tests.png and -nodes.png: traversal cost per pixel of the primary rays, one "
+                 "colour scale for all structures (the folder is created if missing)");
+  cmd.add_option("--plot", args.plot, "Write an SVG chart of Mrays/s, build time and memory per structure");
+  add_allow_outside_paths_flag(cmd, args.allow_outside_paths);
+  cmd.add_flag("-q,--quiet", args.quiet, "No progress lines on stderr");
+}
+
 }  // namespace
 
 CommandRunner add_compare_command(CLI::App& app) {
-  auto args = std::make_shared<CompareArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "compare",
-      "Build every acceleration structure for a scene, trace the same rays through each, and tabulate "
-      "build time, memory, Mrays/s, traversal work and agreement");
-  cmd->add_option("scene", args->scene, "Scene: a built-in name, an SPD generator (spd:balls) or a file")->required();
-  std::string names;
-  for (const std::string& n : args->accels) names += (names.empty() ? "" : ",") + n;
-  cmd->add_option("--accels", args->accels,
-                  "Structures to compare, comma-separated, in table order (default: " + names + ")")
-      ->delimiter(',')
-      ->check(CLI::IsMember(accelerator_choices()));
-  cmd->add_option("--width", args->width, "Primary rays per row (default 512)")->check(CLI::Range(1, 16384));
-  cmd->add_option("--height", args->height, "Rows of primary rays (default: from the scene's aspect ratio)")
-      ->check(CLI::Range(1, 16384));
-  cmd->add_option("--threads", args->threads, "Worker threads; 0 = all cores")
-      ->check(CLI::Range(0, 1024))
-      ->capture_default_str();
-  cmd->add_option("--repeat", args->repeat, "Timed passes per ray kind; the median is reported")
-      ->check(CLI::Range(1, 1000))
-      ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of the light samples and bounce directions")
-      ->check([](const std::string& v) { return v.starts_with('-') ? "the seed must not be negative" : ""; })
-      ->capture_default_str();
-  cmd->add_option("--brute-limit", args->brute_limit, "Skip brute force when its estimated time exceeds this (seconds)")
-      ->check(CLI::Range(0.0, 1e9))
-      ->capture_default_str();
-  add_accel_parameter_options(*cmd, args->accel);
-  cmd->add_option("--csv", args->csv, "Also write the table as CSV to this file");
-  cmd->add_option("--json", args->json, "Also write the table as JSON to this file");
-  cmd->add_option("--heatmaps", args->heatmaps,
-                  "Write DIR/<structure>-tests.png and -nodes.png: traversal cost per pixel of the primary rays, one "
-                  "colour scale for all structures (the folder is created if missing)");
-  cmd->add_option("--plot", args->plot, "Write an SVG chart of Mrays/s, build time and memory per structure");
-  cmd->add_flag("--allow-outside-paths", args->allow_outside_paths,
-                "Let a scene file reference files outside its own folder");
-  cmd->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
-  return [args] { return run(*args); };
+  return add_command<CompareArgs>(app, "compare",
+                                  "Build every acceleration structure for a scene, trace the same rays through each, "
+                                  "and tabulate build time, memory, Mrays/s, traversal work and agreement",
+                                  add_options, run);
 }
 
 }  // namespace raylab::cli

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "command_setup.h"
 #include "commands.h"
 #include "raylab/core/error.h"
 #include "raylab/io/atomic_file.h"
@@ -56,22 +57,22 @@ int run(const ConvertArgs& args) {
   return 0;
 }
 
+void add_options(CLI::App& cmd, ConvertArgs& args) {
+  cmd.add_option("input", args.input, "Scene: built-in name, spd:NAME[?size=N], or a scene or mesh file")->required();
+  cmd.add_option("output", args.output, "Output file: .nff (analytic shapes kept), .obj or .ply (tessellated)")
+      ->required();
+  cmd.add_option("--segments", args.segments, "Segments around tessellated spheres, cylinders and disks")
+      ->check(CLI::Range(3, 1024))
+      ->capture_default_str();
+  add_allow_outside_paths_flag(cmd, args.allow_outside_paths);
+  cmd.add_flag("-q,--quiet", args.quiet, "No summary");
+}
+
 }  // namespace
 
 CommandRunner add_convert_command(CLI::App& app) {
-  auto args = std::make_shared<ConvertArgs>();
-  CLI::App* cmd =
-      app.add_subcommand("convert", "Write a scene as NFF, OBJ or binary PLY (format from OUT's extension)");
-  cmd->add_option("input", args->input, "Scene: built-in name, spd:NAME[?size=N], or a scene or mesh file")->required();
-  cmd->add_option("output", args->output, "Output file: .nff (analytic shapes kept), .obj or .ply (tessellated)")
-      ->required();
-  cmd->add_option("--segments", args->segments, "Segments around tessellated spheres, cylinders and disks")
-      ->check(CLI::Range(3, 1024))
-      ->capture_default_str();
-  cmd->add_flag("--allow-outside-paths", args->allow_outside_paths,
-                "Let a scene file reference files outside its own folder");
-  cmd->add_flag("-q,--quiet", args->quiet, "No summary");
-  return [args] { return run(*args); };
+  return add_command<ConvertArgs>(
+      app, "convert", "Write a scene as NFF, OBJ or binary PLY (format from OUT's extension)", add_options, run);
 }
 
 }  // namespace raylab::cli

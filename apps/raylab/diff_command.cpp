@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "command_setup.h"
 #include "commands.h"
 #include "raylab/io/atomic_file.h"
 #include "raylab/io/image_io.h"
@@ -37,22 +38,23 @@ int run(const DiffArgs& args) {
   return 0;
 }
 
+void add_options(CLI::App& cmd, DiffArgs& args) {
+  cmd.add_option("first", args.first, "First image")->required();
+  cmd.add_option("second", args.second, "Second image")->required();
+  cmd.add_option("--max-rmse", args.max_rmse, "Exit with 1 when the RMSE exceeds this")->check(CLI::NonNegativeNumber);
+  cmd.add_option("--image", args.image,
+                 "Also write where the images differ: |first - second| of the display values, times --scale, "
+                 "black where they agree");
+  cmd.add_option("--scale", args.scale, "Amplification of the --image difference")
+      ->check(CLI::Range(1e-3, 1e6))
+      ->capture_default_str();
+}
+
 }  // namespace
 
 CommandRunner add_diff_command(CLI::App& app) {
-  auto args = std::make_shared<DiffArgs>();
-  CLI::App* cmd = app.add_subcommand("diff", "Compare two images (.png .exr .pfm) by RMSE in 8-bit sRGB steps");
-  cmd->add_option("first", args->first, "First image")->required();
-  cmd->add_option("second", args->second, "Second image")->required();
-  cmd->add_option("--max-rmse", args->max_rmse, "Exit with 1 when the RMSE exceeds this")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--image", args->image,
-                  "Also write where the images differ: |first - second| of the display values, times --scale, "
-                  "black where they agree");
-  cmd->add_option("--scale", args->scale, "Amplification of the --image difference")
-      ->check(CLI::Range(1e-3, 1e6))
-      ->capture_default_str();
-  return [args] { return run(*args); };
+  return add_command<DiffArgs>(app, "diff", "Compare two images (.png .exr .pfm) by RMSE in 8-bit sRGB steps",
+                               add_options, run);
 }
 
 }  // namespace raylab::cli

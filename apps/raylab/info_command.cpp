@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "command_setup.h"
 #include "commands.h"
 #include "raylab/core/stopwatch.h"
 #include "raylab/io/scene_loader.h"
@@ -83,15 +84,16 @@ int run(const InfoArgs& args) {
   return 0;
 }
 
+void add_options(CLI::App& cmd, InfoArgs& args) {
+  cmd.add_option("scene", args.scene, "Scene: built-in name, spd:NAME[?size=N], or a scene or mesh file")->required();
+  add_allow_outside_paths_flag(cmd, args.allow_outside_paths);
+}
+
 }  // namespace
 
 CommandRunner add_info_command(CLI::App& app) {
-  auto args = std::make_shared<InfoArgs>();
-  CLI::App* cmd = app.add_subcommand("info", "Describe a scene: primitives, bounds, materials, lights, camera");
-  cmd->add_option("scene", args->scene, "Scene: built-in name, spd:NAME[?size=N], or a scene or mesh file")->required();
-  cmd->add_flag("--allow-outside-paths", args->allow_outside_paths,
-                "Let a scene file reference files outside its own folder");
-  return [args] { return run(*args); };
+  return add_command<InfoArgs>(app, "info", "Describe a scene: primitives, bounds, materials, lights, camera",
+                               add_options, run);
 }
 
 }  // namespace raylab::cli

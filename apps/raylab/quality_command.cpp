@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "command_setup.h"
 #include "commands.h"
 #include "raylab/accel/two_level.h"
 #include "raylab/core/error.h"
@@ -57,7 +58,8 @@ void image_size(const QualityArgs& args, RenderSettings& s) {
   }
 }
 
-int run(const QualityArgs& args) {
+// The study's options from the arguments, checked (usage errors before any work).
+QualityOptions quality_options(const QualityArgs& args) {
   QualityOptions options;
   options.budgets = parse_budget_list(args.budgets);
   if (!args.samplers.empty()) options.samplers = parse_sampler_list(args.samplers);
@@ -68,16 +70,11 @@ int run(const QualityArgs& args) {
   options.cache_dir = args.cache_dir.empty() ? default_reference_cache_dir() : args.cache_dir;
   validate_quality_options(options);
   if (args.filter) make_filter(*args.filter, args.filter_radius.value_or(0.f));  // a bad name before the scene loads
-  if (!args.plot.empty() && !args.plot.ends_with(".svg")) {
-    throw UsageError("cannot write '" + args.plot + "': the plot is an SVG file (.svg)");
-  }
-  for (const std::string* path : {&args.csv, &args.json, &args.plot}) {
-    if (!path->empty()) check_writable(*path);  // fail before the work, not after it
-  }
-  // A named reference is read first: a missing file should not wait for the scene to load.
-  std::optional<Film> given;
-  if (options.reference != "auto") given = load_reference_file(options.reference);
+  return options;
+}
 
+// The scene with the image size and the filter the arguments set.
+Scene study_scene(const QualityArgs& args) {
   LoadOptions load;
   load.allow_outside_paths = args.allow_outside_paths;
   Scene scene = load_scene(args.scene, load);
@@ -88,12 +85,13 @@ int run(const QualityArgs& args) {
   if (args.filter_radius) s.filter_radius = *args.filter_radius;
   if (args.aa_threshold) s.aa_threshold = *args.aa_threshold;
   make_filter(s.filter, s.filter_radius);  // the scene's own filter, checked before the work
-  options.reference_key = scene_source_key(args.scene);
+  return scene;
+}
 
-  const std::unique_ptr<Accelerator> accel =
-      make_scene_accelerator(scene.geometry, scene.prototypes, scene.instances, SceneAccelOptions{});
-  const bool interactive = ::isatty(STDERR_FILENO) != 0;
-
+// The reference: the image given (which must be the study's size), else the cached or rendered one.
+ReferenceImage study_reference(const QualityArgs& args, const QualityOptions& options, const Scene& scene,
+                               const Accelerator& accel, std::optional<Film>& given) {
+  const RenderSettings& s = scene.settings;
   ReferenceImage reference;
   if (given) {
     if (given->width() != s.width || given->height() != s.height) {
@@ -106,17 +104,31 @@ int run(const QualityArgs& args) {
     reference.description = options.reference;
   } else {
     std::optional<ProgressBar> bar;
-    if (!args.quiet) bar.emplace("reference", stderr, interactive);
-    reference = obtain_reference(scene, *accel, options, [&bar](int done, int total) {
+    if (!args.quiet) bar.emplace("reference", stderr, ::isatty(STDERR_FILENO) != 0);
+    reference = obtain_reference(scene, accel, options, [&bar](int done, int total) {
       if (bar) bar->update(done, total);
     });
     if (bar && reference.rendered) bar->finish(fmt::format("{}x{}, {} spp", s.width, s.height, options.reference_spp));
   }
   if (!args.quiet) fmt::print(stderr, "reference: {}\n", reference.description);
+  return reference;
+}
+
+int run(const QualityArgs& args) {
+  QualityOptions options = quality_options(args);
+  check_table_outputs(args.csv, args.json, args.plot);
+  // A named reference is read first: a missing file should not wait for the scene to load.
+  std::optional<Film> given;
+  if (options.reference != "auto") given = load_reference_file(options.reference);
+  const Scene scene = study_scene(args);
+  options.reference_key = scene_source_key(args.scene);
+  const std::unique_ptr<Accelerator> accel =
+      make_scene_accelerator(scene.geometry, scene.prototypes, scene.instances, SceneAccelOptions{});
+  const ReferenceImage reference = study_reference(args, options, scene, *accel, given);
 
   std::optional<ProgressBar> bar;
   if (!args.quiet) {
-    bar.emplace("quality", stderr, interactive);
+    bar.emplace("quality", stderr, ::isatty(STDERR_FILENO) != 0);
     options.on_progress = [&bar](double fraction, const std::string&) {
       bar->update(static_cast<int>(fraction * 1000.0), 1000);
     };
@@ -132,60 +144,55 @@ int run(const QualityArgs& args) {
   if (!args.csv.empty()) write_text_atomically(args.csv, format_quality_csv(result));
   if (!args.json.empty()) write_text_atomically(args.json, format_quality_json(result, args.scene));
   if (!args.plot.empty()) write_quality_chart(result, args.scene, args.plot);
-  if (!args.quiet) {
-    for (const std::string* path : {&args.csv, &args.json, &args.plot}) {
-      if (!path->empty()) fmt::print(stderr, "wrote {}\n", *path);
-    }
-  }
+  if (!args.quiet) print_written({&args.csv, &args.json, &args.plot});
   return 0;
+}
+
+void add_options(CLI::App& cmd, QualityArgs& args) {
+  add_scene_argument(cmd, args.scene);
+  cmd.add_option("--reference", args.reference,
+                 "Reference image (.exr or .pfm, the study's size), or 'auto': rendered with --reference-spp "
+                 "jittered samples and cached")
+      ->capture_default_str();
+  cmd.add_option("--budgets", args.budgets,
+                 "Samples per pixel to study, comma-separated (adaptive samplers: the most per pixel)")
+      ->capture_default_str();
+  std::string names;
+  for (const std::string& n : quality_sampler_names()) names += (names.empty() ? "" : ",") + n;
+  cmd.add_option("--samplers", args.samplers, "Samplers, comma-separated, in table order (default: " + names + ")");
+  cmd.add_option("--seeds", args.seeds, "Renders per row, seeds 0..K-1 (center, regular, adaptive-corners: one)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd.add_option("--width", args.width, "Image width (default: the scene's)")->check(CLI::Range(1, 16384));
+  cmd.add_option("--height", args.height, "Image height (default: the scene's)")->check(CLI::Range(1, 16384));
+  cmd.add_option("--filter", args.filter,
+                 "Reconstruction filter: box, tent, gaussian, mitchell (default: the scene's)");
+  cmd.add_option("--filter-radius", args.filter_radius, "Filter radius in pixels; 0 = the filter's default");
+  cmd.add_option("--aa-threshold", args.aa_threshold,
+                 "Adaptive samplers: colour difference that triggers refinement (default: the sampler's)")
+      ->check(CLI::Range(0.f, 1.f));
+  cmd.add_option("--reference-spp", args.reference_spp, "Samples per pixel of an auto reference (jittered)")
+      ->check(CLI::Range(1, 65536))
+      ->capture_default_str();
+  cmd.add_option("--cache-dir", args.cache_dir,
+                 "Folder of cached auto references (default: $XDG_CACHE_HOME/raylab/references, else "
+                 "~/.cache/raylab/references)");
+  add_threads_option(cmd, args.threads);
+  cmd.add_option("--plot", args.plot, "Write an SVG chart: RMSE against primary rays per pixel, log-log");
+  cmd.add_option("--csv", args.csv, "Also write the table as CSV to this file");
+  cmd.add_option("--json", args.json, "Also write the table as JSON to this file");
+  add_allow_outside_paths_flag(cmd, args.allow_outside_paths);
+  cmd.add_flag("-q,--quiet", args.quiet, "No progress on stderr");
 }
 
 }  // namespace
 
 CommandRunner add_quality_command(CLI::App& app) {
-  auto args = std::make_shared<QualityArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "quality",
+  return add_command<QualityArgs>(
+      app, "quality",
       "Render a scene with every pixel sampler at several sample budgets and seeds, and tabulate the error "
-      "against a reference image (RMSE, PSNR, SSIM, 99.9th percentile) against the rays and time spent");
-  cmd->add_option("scene", args->scene, "Scene: a built-in name, an SPD generator (spd:balls) or a file")->required();
-  cmd->add_option("--reference", args->reference,
-                  "Reference image (.exr or .pfm, the study's size), or 'auto': rendered with --reference-spp "
-                  "jittered samples and cached")
-      ->capture_default_str();
-  cmd->add_option("--budgets", args->budgets,
-                  "Samples per pixel to study, comma-separated (adaptive samplers: the most per pixel)")
-      ->capture_default_str();
-  std::string names;
-  for (const std::string& n : quality_sampler_names()) names += (names.empty() ? "" : ",") + n;
-  cmd->add_option("--samplers", args->samplers, "Samplers, comma-separated, in table order (default: " + names + ")");
-  cmd->add_option("--seeds", args->seeds, "Renders per row, seeds 0..K-1 (center, regular, adaptive-corners: one)")
-      ->check(CLI::Range(1, 1000))
-      ->capture_default_str();
-  cmd->add_option("--width", args->width, "Image width (default: the scene's)")->check(CLI::Range(1, 16384));
-  cmd->add_option("--height", args->height, "Image height (default: the scene's)")->check(CLI::Range(1, 16384));
-  cmd->add_option("--filter", args->filter,
-                  "Reconstruction filter: box, tent, gaussian, mitchell (default: the scene's)");
-  cmd->add_option("--filter-radius", args->filter_radius, "Filter radius in pixels; 0 = the filter's default");
-  cmd->add_option("--aa-threshold", args->aa_threshold,
-                  "Adaptive samplers: colour difference that triggers refinement (default: the sampler's)")
-      ->check(CLI::Range(0.f, 1.f));
-  cmd->add_option("--reference-spp", args->reference_spp, "Samples per pixel of an auto reference (jittered)")
-      ->check(CLI::Range(1, 65536))
-      ->capture_default_str();
-  cmd->add_option("--cache-dir", args->cache_dir,
-                  "Folder of cached auto references (default: $XDG_CACHE_HOME/raylab/references, else "
-                  "~/.cache/raylab/references)");
-  cmd->add_option("--threads", args->threads, "Worker threads; 0 = all cores")
-      ->check(CLI::Range(0, 1024))
-      ->capture_default_str();
-  cmd->add_option("--plot", args->plot, "Write an SVG chart: RMSE against primary rays per pixel, log-log");
-  cmd->add_option("--csv", args->csv, "Also write the table as CSV to this file");
-  cmd->add_option("--json", args->json, "Also write the table as JSON to this file");
-  cmd->add_flag("--allow-outside-paths", args->allow_outside_paths,
-                "Let a scene file reference files outside its own folder");
-  cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
-  return [args] { return run(*args); };
+      "against a reference image (RMSE, PSNR, SSIM, 99.9th percentile) against the rays and time spent",
+      add_options, run);
 }
 
 }  // namespace raylab::cli

@@ -13,12 +13,14 @@
 #include <vector>
 
 #include "accel_options.h"
+#include "command_setup.h"
 #include "commands.h"
 #include "raylab/accel/factory.h"
 #include "raylab/accel/two_level.h"
 #include "raylab/core/byte_size.h"
 #include "raylab/core/error.h"
 #include "raylab/core/interrupt.h"
+#include "raylab/dist/frame_range.h"
 #include "raylab/dist/launcher.h"
 #include "raylab/io/atomic_file.h"
 #include "raylab/io/checkpoint_file.h"
@@ -37,6 +39,7 @@
 #include "raylab/scene/scene_fingerprint.h"
 #include "raylab/scene/spd.h"
 #include "render_modes.h"
+#include "render_report.h"
 #include "render_setup.h"
 
 namespace raylab::cli {
@@ -91,12 +94,10 @@ std::vector<std::string> sampler_choices() {
   return names;
 }
 
-int run(const RenderArgs& given) {
-  if (given.list_scenes) {
-    list_scenes();
-    return 0;
-  }
-  if (given.spd_protocol && (given.width || given.height || given.spp || given.max_depth)) {
+// Usage errors of options that do not go together, before any work.
+void check_mode_options(const RenderArgs& given) {
+  const SettingsOverride& s = given.settings;
+  if (given.spd_protocol && (s.width || s.height || s.spp || s.max_depth)) {
     throw UsageError("--spd-protocol fixes the image size, samples and depth (512x512, corner rays, depth 5)");
   }
   if (given.spd_protocol && (given.passes || given.checkpoint || given.resume || given.frames)) {
@@ -106,160 +107,169 @@ int run(const RenderArgs& given) {
     throw UsageError(std::string(given.spd_facing ? "--spd-facing" : "--json") + " applies to --spd-protocol only");
   }
   if (given.json && *given.json != "-") check_writable(*given.json);  // fail before the work, not after it
-  if (given.frames) return run_frames(given);
-  if (dist::launched_by_mpi()) return run_under_mpi(given);
+}
+
+// One image in this process.
+int render_here(const RenderArgs& given) {
   // Until the render starts there is nothing to save: a signal ends the run at once.
   install_interrupt_handlers(remove_pending_temporary_files, true);
   const std::unique_ptr<RenderSetup> prepared = prepare_render(given, true);
   RenderSetup& setup = *prepared;
-  const RenderArgs& args = setup.args;
   Scene& scene = setup.scene;  // (the SPD protocol sets its own camera settings)
-  const RenderSettings& s = scene.settings;
   RenderOptions options = render_options(setup);
-  if (args.spd_protocol) return run_spd_protocol(setup, options);
-  Film film(s.width, s.height);
-  const bool interactive = ::isatty(STDERR_FILENO) != 0;
+  if (setup.args.spd_protocol) return run_spd_protocol(setup, options);
+  Film film(scene.settings.width, scene.settings.height);
   std::optional<ProgressBar> bar;
-  if (!args.quiet) bar.emplace("render", stderr, interactive);
-  if (bar) options.on_progress = [&bar](int done, int total) { bar->update(done, total); };
+  show_progress(setup.args, options, bar);
   const bool uniform = !is_adaptive_sampler(setup.sampler);
   if (uniform) {
     options.progress = &setup.progress;
     options.should_stop = [] { return interrupt_signal() != 0; };
-    options.on_pass = [&](int done, const Film& image) {
-      write_image(image, args.output);
-      if (!args.quiet)
-        fmt::print(stderr, "{}pass {}/{}: wrote {}\n", interactive ? "\n" : "", done, options.passes, args.output);
-    };
+    write_each_pass(setup.args, options);
   }
   // From here the first signal lets the tiles under way finish, then the partial image and a
   // checkpoint are written; the adaptive samplers cannot stop part-way, so a signal ends them.
   install_interrupt_handlers(remove_pending_temporary_files, !uniform);
   const RenderResult result = render(scene, *setup.accel, film, options);
-  if (result.interrupted) {
-    const int signal = interrupt_signal();
-    if (bar) bar->finish("interrupted");
-    write_outputs(args, args.output, film, result.samples_per_pixel);
-    RenderCheckpoint checkpoint = setup.header;
-    checkpoint.progress = std::move(setup.progress);
-    write_checkpoint(setup.checkpoint_path, checkpoint);
-    print_interrupted(signal, args.output, setup.checkpoint_path, checkpoint.progress);
-    return interrupt_exit_status(signal);
+  if (result.interrupted) return report_interrupted(setup, film, result, bar, interrupt_signal(), true);
+  return report_finished(setup, film, result, bar, nullptr, 1);
+}
+
+int run(const RenderArgs& given) {
+  if (given.list_scenes) {
+    list_scenes();
+    return 0;
   }
-  const double mrays = result.seconds > 0 ? result.stats.total_rays() / result.seconds * 1e-6 : 0.0;
-  const std::string sampling = sampling_summary(setup, result);
-  if (bar)
-    bar->finish(fmt::format("{}x{}, {}, {} rays ({:.2f} Mrays/s)", s.width, s.height, sampling,
-                            result.stats.total_rays(), mrays));
-  print_warnings(result);
-  write_outputs(args, args.output, film, result.samples_per_pixel);
-  remove_finished_checkpoint(setup);
-  if (args.stats) print_stats(result.stats, setup.accel->info(), result.seconds);
-  if (!args.quiet) {
-    fmt::print("wrote {} ({}x{}, {}, {} primary rays, --accel {}) in {}\n", args.output, s.width, s.height, sampling,
-               result.primary_rays(), args.accel, ProgressBar::format_duration(result.seconds));
-  }
-  return 0;
+  check_mode_options(given);
+  if (given.frames) return run_frames(given);
+  if (dist::launched_by_mpi()) return run_under_mpi(given);
+  return render_here(given);
+}
+
+// The scene and the image: SCENE, --output, --width, --height.
+void add_image_options(CLI::App& cmd, RenderArgs& args) {
+  args.scene_option =
+      cmd.add_option("scene", args.scene,
+                     "Scene: a built-in name (demo, cornell), an SPD generator (spd:balls, spd:balls?size=6), or a "
+                     "file (.json .nff .obj .gltf .glb .ply .off .stl); see --list-scenes")
+          ->capture_default_str();
+  cmd.add_option("-o,--output", args.output, "Output image; format from the extension: .png .exr .pfm")
+      ->capture_default_str();
+  cmd.add_option("--width", args.settings.width, "Image width in pixels")->check(CLI::Range(1, 32768));
+  cmd.add_option("--height", args.settings.height, "Image height in pixels")->check(CLI::Range(1, 32768));
+}
+
+// Where the samples go and how they become pixels: --spp, --sampler, --filter, the adaptive
+// samplers' parameters, --aov.
+void add_sampling_options(CLI::App& cmd, RenderArgs& args) {
+  SettingsOverride& s = args.settings;
+  cmd.add_option("--spp", s.spp,
+                 "Samples per pixel; a count the sampler cannot use is rounded with a notice. Adaptive "
+                 "samplers: the most samples a pixel may get (sets --aa-depth to floor(log4 spp))")
+      ->check(CLI::Range(1, 1 << 16));
+  cmd.add_option("--sampler", s.sampler,
+                 "Sample placement: auto (center at 1 spp, else jittered), center, regular, random, jittered, "
+                 "cmj, sobol, adaptive-corners, adaptive")
+      ->check(CLI::IsMember(sampler_choices()));
+  cmd.add_option("--filter", s.filter, "Reconstruction filter: box (default), tent, gaussian, mitchell")
+      ->check(CLI::IsMember(std::vector<std::string>(filter_names().begin(), filter_names().end())));
+  cmd.add_option("--filter-radius", s.filter_radius,
+                 "Filter half-width in pixels (default: box 0.5, tent 1, gaussian 1.5, mitchell 2)")
+      ->check(CLI::Range(0.5f, 8.f));
+  cmd.add_option("--aa-threshold", s.aa_threshold,
+                 "Adaptive samplers: display-encoded colour difference that triggers refinement (default 0.1)")
+      ->check(CLI::Range(0.f, 1.f));
+  cmd.add_option("--aa-depth", s.aa_depth,
+                 "Adaptive samplers: most subdivision levels (a pixel holds at most 4^depth cells)")
+      ->check(CLI::Range(0, 8));
+  cmd.add_option("--aov", args.aovs,
+                 "Extra outputs: 'samples' writes the primary samples per pixel as an EXR layer (into an .exr "
+                 "output, else OUTPUT.samples.exr) and a false-colour OUTPUT.samples.png")
+      ->check(CLI::IsMember({"samples"}))
+      ->delimiter(',');
+}
+
+// How the rays are traced: --accel and its parameters, --threads, --packets, --seed, --max-depth.
+void add_tracing_options(CLI::App& cmd, RenderArgs& args) {
+  args.accel_option = cmd.add_option("--accel", args.accel, "Acceleration structure")
+                          ->check(CLI::IsMember(accelerator_choices()))
+                          ->capture_default_str();
+  add_accel_parameter_options(cmd, args.structure);
+  add_threads_option(cmd, args.threads);
+  cmd.add_option("--packets", args.packets,
+                 "Trace primary rays in packets of 16 and shadow rays toward point and directional lights as "
+                 "one packet per light: on or off. The image and ray counts are identical either way; the "
+                 "adaptive samplers always trace single rays")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  // CLI11 (2.1) would read "-1" into the unsigned seed as 2^64 - 1 without a word.
+  cmd.add_option("--seed", args.settings.seed, "Seed of every random choice (default: the scene's, 0)")
+      ->check([](const std::string& v) { return v.starts_with('-') ? "the seed must not be negative" : ""; });
+  cmd.add_option("--max-depth", args.settings.max_depth, "Ray tree depth; 1 = eye rays only (default 5)")
+      ->check(CLI::Range(1, 64));
+}
+
+// Renders that take long or take many: --passes, checkpoints, --max-memory, --frames, MPI.
+void add_long_render_options(CLI::App& cmd, RenderArgs& args) {
+  cmd.add_option("--passes", args.passes,
+                 "Take the samples in this many passes over the whole image, writing the image after each "
+                 "(uniform samplers; 1 to spp)")
+      ->check(CLI::Range(1, 1 << 16));
+  cmd.add_option("--checkpoint", args.checkpoint,
+                 "Save the render's progress to this file every --checkpoint-every seconds (removed when the "
+                 "render completes); an interrupted render always saves one (default: OUTPUT.ckpt)");
+  cmd.add_option("--checkpoint-every", args.checkpoint_every, "Seconds between checkpoints")
+      ->check(CLI::Range(0.001, 1e9))
+      ->capture_default_str();
+  cmd.add_option("--resume", args.resume,
+                 "Go on with the render saved in this checkpoint (settings not given are taken from it; a "
+                 "checkpoint of another scene or other settings is refused); the image is byte-identical to an "
+                 "uninterrupted render");
+  cmd.add_option("--max-memory", args.max_memory,
+                 "Refuse a render whose estimated memory exceeds this (e.g. 512M, 8G; default: 80% of the "
+                 "machine's memory)")
+      ->check([](const std::string& v) { return parse_byte_size(v) ? "" : "expected a size such as 512M or 8G"; });
+  cmd.add_option("--frames", args.frames,
+                 "Render frames A to B of the scene's camera path (A:B, or one frame A); OUTPUT gets the "
+                 "frame number: a run of # in its name (frame.####.png), else before the extension")
+      ->check([](const std::string& v) { return dist::parse_frame_range(v) ? "" : "expected A:B or A (0 <= A <= B)"; });
+  cmd.add_option("--rank-timeout", args.rank_timeout,
+                 "Under MPI: seconds a rank holding work may stay silent before the run fails naming it")
+      ->check(CLI::Range(0.1, 1e6))
+      ->capture_default_str();
+}
+
+// What is printed and what is allowed: --stats, --quiet, --allow-outside-paths, --list-scenes;
+// then the SPD testing procedure: --spd-protocol, --spd-facing, --json.
+void add_report_options(CLI::App& cmd, RenderArgs& args) {
+  cmd.add_flag("--stats", args.stats, "Print ray counts, traversal work and timings after the render");
+  cmd.add_flag("-q,--quiet", args.quiet, "No progress bar and no summary");
+  add_allow_outside_paths_flag(cmd, args.allow_outside_paths);
+  cmd.add_flag("--list-scenes", args.list_scenes, "List the built-in scenes and SPD generators, then exit");
+  cmd.add_flag("--spd-protocol", args.spd_protocol,
+               "Render by the SPD testing procedure (512x512, rays through pixel corners, depth 5) and print "
+               "the ray counts (beside the SPD README's statistics when the scene is one of its seven at its "
+               "size)");
+  cmd.add_option("--spd-facing", args.spd_facing,
+                 "With --spd-protocol: which normal must face a light for a shadow ray (rule 10): viewer (the "
+                 "normal turned toward the ray, default) or outward (the primitive's own)")
+      ->check(CLI::IsMember(spd_facing_names()));
+  cmd.add_option("--json", args.json,
+                 "With --spd-protocol: also write the ray counts as JSON to this file ('-': stdout)");
+}
+
+void add_options(CLI::App& cmd, RenderArgs& args) {
+  add_image_options(cmd, args);
+  add_sampling_options(cmd, args);
+  add_tracing_options(cmd, args);
+  add_long_render_options(cmd, args);
+  add_report_options(cmd, args);
 }
 
 }  // namespace
 
 CommandRunner add_render_command(CLI::App& app) {
-  auto args = std::make_shared<RenderArgs>();
-  CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image (.png, .exr or .pfm)");
-  args->scene_option =
-      cmd->add_option("scene", args->scene,
-                      "Scene: a built-in name (demo, cornell), an SPD generator (spd:balls, spd:balls?size=6), or a "
-                      "file (.json .nff .obj .gltf .glb .ply .off .stl); see --list-scenes")
-          ->capture_default_str();
-  cmd->add_option("-o,--output", args->output, "Output image; format from the extension: .png .exr .pfm")
-      ->capture_default_str();
-  cmd->add_option("--width", args->width, "Image width in pixels")->check(CLI::Range(1, 32768));
-  cmd->add_option("--height", args->height, "Image height in pixels")->check(CLI::Range(1, 32768));
-  cmd->add_option("--spp", args->spp,
-                  "Samples per pixel; a count the sampler cannot use is rounded with a notice. Adaptive "
-                  "samplers: the most samples a pixel may get (sets --aa-depth to floor(log4 spp))")
-      ->check(CLI::Range(1, 1 << 16));
-  cmd->add_option("--sampler", args->sampler,
-                  "Sample placement: auto (center at 1 spp, else jittered), center, regular, random, jittered, "
-                  "cmj, sobol, adaptive-corners, adaptive")
-      ->check(CLI::IsMember(sampler_choices()));
-  cmd->add_option("--filter", args->filter, "Reconstruction filter: box (default), tent, gaussian, mitchell")
-      ->check(CLI::IsMember(std::vector<std::string>(filter_names().begin(), filter_names().end())));
-  cmd->add_option("--filter-radius", args->filter_radius,
-                  "Filter half-width in pixels (default: box 0.5, tent 1, gaussian 1.5, mitchell 2)")
-      ->check(CLI::Range(0.5f, 8.f));
-  cmd->add_option("--aa-threshold", args->aa_threshold,
-                  "Adaptive samplers: display-encoded colour difference that triggers refinement (default 0.1)")
-      ->check(CLI::Range(0.f, 1.f));
-  cmd->add_option("--aa-depth", args->aa_depth,
-                  "Adaptive samplers: most subdivision levels (a pixel holds at most 4^depth cells)")
-      ->check(CLI::Range(0, 8));
-  cmd->add_option("--aov", args->aovs,
-                  "Extra outputs: 'samples' writes the primary samples per pixel as an EXR layer (into an .exr "
-                  "output, else OUTPUT.samples.exr) and a false-colour OUTPUT.samples.png")
-      ->check(CLI::IsMember({"samples"}))
-      ->delimiter(',');
-  args->accel_option = cmd->add_option("--accel", args->accel, "Acceleration structure")
-                           ->check(CLI::IsMember(accelerator_choices()))
-                           ->capture_default_str();
-  add_accel_parameter_options(*cmd, args->structure);
-  cmd->add_option("--threads", args->threads, "Worker threads; 0 = all cores")
-      ->check(CLI::Range(0, 1024))
-      ->capture_default_str();
-  cmd->add_option("--packets", args->packets,
-                  "Trace primary rays in packets of 16 and shadow rays toward point and directional lights as "
-                  "one packet per light: on or off. The image and ray counts are identical either way; the "
-                  "adaptive samplers always trace single rays")
-      ->check(CLI::IsMember({"on", "off"}))
-      ->capture_default_str();
-  // CLI11 (2.1) would read "-1" into the unsigned seed as 2^64 - 1 without a word.
-  cmd->add_option("--seed", args->seed, "Seed of every random choice (default: the scene's, 0)")
-      ->check([](const std::string& v) { return v.starts_with('-') ? "the seed must not be negative" : ""; });
-  cmd->add_option("--max-depth", args->max_depth, "Ray tree depth; 1 = eye rays only (default 5)")
-      ->check(CLI::Range(1, 64));
-  cmd->add_option("--passes", args->passes,
-                  "Take the samples in this many passes over the whole image, writing the image after each "
-                  "(uniform samplers; 1 to spp)")
-      ->check(CLI::Range(1, 1 << 16));
-  cmd->add_option("--checkpoint", args->checkpoint,
-                  "Save the render's progress to this file every --checkpoint-every seconds (removed when the "
-                  "render completes); an interrupted render always saves one (default: OUTPUT.ckpt)");
-  cmd->add_option("--checkpoint-every", args->checkpoint_every, "Seconds between checkpoints")
-      ->check(CLI::Range(0.001, 1e9))
-      ->capture_default_str();
-  cmd->add_option("--resume", args->resume,
-                  "Go on with the render saved in this checkpoint (settings not given are taken from it; a "
-                  "checkpoint of another scene or other settings is refused); the image is byte-identical to an "
-                  "uninterrupted render");
-  cmd->add_option("--max-memory", args->max_memory,
-                  "Refuse a render whose estimated memory exceeds this (e.g. 512M, 8G; default: 80% of the "
-                  "machine's memory)")
-      ->check([](const std::string& v) { return parse_byte_size(v) ? "" : "expected a size such as 512M or 8G"; });
-  cmd->add_option("--frames", args->frames,
-                  "Render frames A to B of the scene's camera path (A:B, or one frame A); OUTPUT gets the "
-                  "frame number: a run of # in its name (frame.####.png), else before the extension")
-      ->check([](const std::string& v) { return parse_frame_range(v) ? "" : "expected A:B or A (0 <= A <= B)"; });
-  cmd->add_option("--rank-timeout", args->rank_timeout,
-                  "Under MPI: seconds a rank holding work may stay silent before the run fails naming it")
-      ->check(CLI::Range(0.1, 1e6))
-      ->capture_default_str();
-  cmd->add_flag("--stats", args->stats, "Print ray counts, traversal work and timings after the render");
-  cmd->add_flag("-q,--quiet", args->quiet, "No progress bar and no summary");
-  cmd->add_flag("--allow-outside-paths", args->allow_outside_paths,
-                "Let a scene file reference files outside its own folder");
-  cmd->add_flag("--list-scenes", args->list_scenes, "List the built-in scenes and SPD generators, then exit");
-  cmd->add_flag("--spd-protocol", args->spd_protocol,
-                "Render by the SPD testing procedure (512x512, rays through pixel corners, depth 5) and print "
-                "the ray counts (beside the SPD README's statistics when the scene is one of its seven at its "
-                "size)");
-  cmd->add_option("--spd-facing", args->spd_facing,
-                  "With --spd-protocol: which normal must face a light for a shadow ray (rule 10): viewer (the "
-                  "normal turned toward the ray, default) or outward (the primitive's own)")
-      ->check(CLI::IsMember(spd_facing_names()));
-  cmd->add_option("--json", args->json,
-                  "With --spd-protocol: also write the ray counts as JSON to this file ('-': stdout)");
-  return [args] { return run(*args); };
+  return add_command<RenderArgs>(app, "render", "Render a scene to an image (.png, .exr or .pfm)", add_options, run);
 }
 
 }  // namespace raylab::cli

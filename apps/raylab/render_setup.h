@@ -14,7 +14,9 @@
 #include "raylab/accel/accelerator.h"
 #include "raylab/io/checkpoint_file.h"
 #include "raylab/render/film.h"
+#include "raylab/render/progress.h"
 #include "raylab/render/renderer.h"
+#include "raylab/render/settings_override.h"
 #include "raylab/scene/scene.h"
 
 namespace raylab::cli {
@@ -24,11 +26,7 @@ struct RenderArgs {
   std::string scene = "demo";
   const CLI::Option* scene_option = nullptr;  ///< to tell a scene given from the default
   std::string output = "render.png";
-  std::optional<int> width, height, spp, max_depth;
-  std::optional<std::uint64_t> seed;
-  std::optional<std::string> sampler, filter;
-  std::optional<float> filter_radius, aa_threshold;
-  std::optional<int> aa_depth;
+  SettingsOverride settings;  ///< --width, --height, --spp, --max-depth, --seed, --sampler, --filter...
   std::vector<std::string> aovs;
   std::string accel = "bvh";
   const CLI::Option* accel_option = nullptr;  ///< to tell --accel given from the default
@@ -79,9 +77,6 @@ RenderOptions render_options(const RenderSetup& setup);
 /// Whether the render saves checkpoints as it goes (--checkpoint or --resume given).
 bool saves_checkpoints(const RenderArgs& args);
 
-/// A hash of everything that decides the image: every rank of a distributed render must agree.
-std::uint64_t render_agreement(const RenderSetup& setup);
-
 /// OUTPUT with its extension replaced by `suffix` ("render.png" -> "render.samples.png").
 std::string beside_output(const std::string& output, const std::string& suffix);
 
@@ -89,21 +84,13 @@ std::string beside_output(const std::string& output, const std::string& suffix);
 void write_outputs(const RenderArgs& args, const std::string& output, const Film& film,
                    const std::vector<std::uint32_t>& samples_per_pixel);
 
-/// Tells the user what an interrupted render wrote and how to go on (the partial image `output`,
-/// the checkpoint, the tiles left).
-void print_interrupted(int signal, const std::string& output, const std::string& checkpoint_path,
-                       const RenderProgress& progress);
+/// Whether stderr is a terminal (a redrawn progress bar, else summary lines).
+bool stderr_interactive();
 
-/// Prints a finished render's notices and its non-finite sample warning.
-void print_warnings(const RenderResult& result);
+/// A progress bar for the render on stderr in `bar` (none with --quiet), fed by options.on_progress.
+void show_progress(const RenderArgs& args, RenderOptions& options, std::optional<ProgressBar>& bar);
 
-/// Removes the checkpoint of a render that has completed (when it saved checkpoints).
-void remove_finished_checkpoint(const RenderSetup& setup);
-
-/// Prints ray counts, traversal work, the accelerator and timings (--stats).
-void print_stats(const RenderStats& stats, const AccelInfo& info, double seconds);
-
-/// The one-line description of the sampling for the summary ("16 spp jittered").
-std::string sampling_summary(const RenderSetup& setup, const RenderResult& result);
+/// Writes the image after each pass of options.passes (set before), with a line saying so.
+void write_each_pass(const RenderArgs& args, RenderOptions& options);
 
 }  // namespace raylab::cli

@@ -3,6 +3,8 @@
 #include <cstdlib>
 #include <string>
 
+#include "raylab/core/error.h"
+
 namespace raylab::dist {
 namespace {
 
@@ -37,6 +39,14 @@ bool mpi_available() {
 #else
   return false;
 #endif
+}
+
+void require_mpi_build() {
+  if (!mpi_available()) {
+    throw UsageError(
+        "this process was started by an MPI launcher, but this raylab was built without MPI "
+        "(install libopenmpi-dev and rebuild, or run raylab without mpirun)");
+  }
 }
 
 }  // namespace raylab::dist

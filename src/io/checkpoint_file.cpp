@@ -11,6 +11,7 @@
 #include "raylab/io/atomic_file.h"
 #include "raylab/io/binary_reader.h"
 #include "raylab/io/read_file.h"
+#include "raylab/io/setting_names.h"
 
 namespace raylab {
 namespace {
@@ -195,17 +196,18 @@ std::vector<std::pair<std::string, std::string>> image_settings(const RenderSett
                                                                 int tile_size, int passes, const std::string& accel) {
   char radius[32];
   std::snprintf(radius, sizeof radius, "%.9g", static_cast<double>(s.filter_radius));
-  return {{"width", std::to_string(s.width)},
-          {"height", std::to_string(s.height)},
-          {"spp", std::to_string(s.spp)},
-          {"sampler", sampler},
-          {"filter", s.filter},
-          {"filter radius", radius},
-          {"seed", std::to_string(s.seed)},
-          {"max depth", std::to_string(s.max_depth)},
-          {"tile size", std::to_string(tile_size)},
-          {"passes", std::to_string(passes)},
-          {"accel", accel}};
+  namespace name = setting_name;
+  return {{name::kWidth, std::to_string(s.width)},
+          {name::kHeight, std::to_string(s.height)},
+          {name::kSpp, std::to_string(s.spp)},
+          {name::kSampler, sampler},
+          {name::kFilter, s.filter},
+          {name::kFilterRadius, radius},
+          {name::kSeed, std::to_string(s.seed)},
+          {name::kMaxDepth, std::to_string(s.max_depth)},
+          {name::kTileSize, std::to_string(tile_size)},
+          {name::kPasses, std::to_string(passes)},
+          {name::kAccel, accel}};
 }
 
 const std::string* saved_setting(const RenderCheckpoint& saved, const std::string& name) {

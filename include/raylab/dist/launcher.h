@@ -14,4 +14,8 @@ int launcher_rank();
 /// Whether this build can render across MPI ranks (MPI was found when it was configured).
 bool mpi_available();
 
+/// Throws UsageError when this build has no MPI (for a process an MPI launcher started: it cannot
+/// take its part in the job).
+void require_mpi_build();
+
 }  // namespace raylab::dist

@@ -49,7 +49,7 @@ RenderCheckpoint read_checkpoint(const std::string& path);
 
 /// The settings of a render that decide its image, as a checkpoint records them (names and values
 /// as text, in this order): width, height, spp, sampler (resolved), filter, filter radius, seed,
-/// max depth, tile size, passes, accel.
+/// max depth, tile size, passes, accel (the names in io/setting_names.h).
 std::vector<std::pair<std::string, std::string>> image_settings(const RenderSettings& settings,
                                                                 const std::string& sampler, int tile_size, int passes,
                                                                 const std::string& accel);

@@ -1,0 +1,37 @@
+#include "command_setup.h"
+
+#include <fmt/core.h>
+
+#include "raylab/core/error.h"
+#include "raylab/io/atomic_file.h"
+
+namespace raylab::cli {
+
+void add_scene_argument(CLI::App& cmd, std::string& scene) {
+  cmd.add_option("scene", scene, "Scene: a built-in name, an SPD generator (spd:balls) or a file")->required();
+}
+
+void add_threads_option(CLI::App& cmd, int& threads, const std::string& description) {
+  cmd.add_option("--threads", threads, description)->check(CLI::Range(0, 1024))->capture_default_str();
+}
+
+void check_table_outputs(const std::string& csv, const std::string& json, const std::string& plot) {
+  if (!plot.empty() && !plot.ends_with(".svg")) {
+    throw UsageError("cannot write '" + plot + "': the plot is an SVG file (.svg)");
+  }
+  for (const std::string* path : {&csv, &json, &plot}) {
+    if (!path->empty()) check_writable(*path);  // fail before the work, not after it
+  }
+}
+
+void print_written(std::initializer_list<const std::string*> paths) {
+  for (const std::string* path : paths) {
+    if (!path->empty()) fmt::print(stderr, "wrote {}\n", *path);
+  }
+}
+
+void add_allow_outside_paths_flag(CLI::App& cmd, bool& allow) {
+  cmd.add_flag("--allow-outside-paths", allow, "Let a scene file reference files outside its own folder");
+}
+
+}  // namespace raylab::cli

@@ -1,0 +1,40 @@
+#pragma once
+/// \file
+/// What every subcommand sets up alike: its arguments held for the runner, and the options
+/// several commands share with the same words.
+
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <string>
+
+#include "commands.h"
+
+namespace raylab::cli {
+
+/// Adds subcommand `name` to `app`: `add_options` binds its options to an Args that lives as long
+/// as the returned runner, which calls `run` with it after parsing.
+template <class Args>
+CommandRunner add_command(CLI::App& app, const std::string& name, const std::string& description,
+                          void (*add_options)(CLI::App&, Args&), int (*run)(const Args&)) {
+  auto args = std::make_shared<Args>();
+  add_options(*app.add_subcommand(name, description), *args);
+  return [args, run] { return run(*args); };
+}
+
+/// Adds the required SCENE argument of the commands that measure a scene (compare, quality, bench).
+void add_scene_argument(CLI::App& cmd, std::string& scene);
+
+/// Adds --threads (0 to 1024, 0 = all cores), described by `description`.
+void add_threads_option(CLI::App& cmd, int& threads, const std::string& description = "Worker threads; 0 = all cores");
+
+/// Usage and input errors about the table outputs of compare and quality, before the work: a
+/// --plot that is not .svg, a --csv, --json or --plot that cannot be written (empty: not asked).
+void check_table_outputs(const std::string& csv, const std::string& json, const std::string& plot);
+
+/// Prints "wrote PATH" on stderr for each of `paths` that is not empty.
+void print_written(std::initializer_list<const std::string*> paths);
+
+/// Adds --allow-outside-paths: a scene file may reference files outside its own folder.
+void add_allow_outside_paths_flag(CLI::App& cmd, bool& allow);
+
+}  // namespace raylab::cli

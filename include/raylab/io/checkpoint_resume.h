@@ -1,0 +1,34 @@
+#pragma once
+/// \file
+/// Going on with a checkpoint: what a render leaves unsaid is taken from the checkpoint (so that
+/// `raylab render --resume FILE` alone goes on with the same scene and settings), and a render
+/// that differs from the checkpoint in anything that decides the image is refused.
+
+#include <optional>
+#include <string>
+
+#include "raylab/io/checkpoint_file.h"
+#include "raylab/render/settings_override.h"
+
+namespace raylab {
+
+/// The parts of a render request a checkpoint can fill in; an empty member was not given.
+struct ResumableRequest {
+  std::optional<std::string> scene;  ///< the scene as named (file, built-in, spd:...)
+  std::optional<std::string> accel;  ///< the acceleration structure
+  std::optional<int> passes;         ///< passes over the image
+  /// Of these the checkpoint fills width, height, spp, max depth, seed, sampler, filter and filter
+  /// radius; not the adaptive samplers' parameters (a checkpoint is of a uniform sampler).
+  SettingsOverride settings;
+};
+
+/// Fills every member of `request` not given from `saved`, the checkpoint read from `path`; a
+/// setting the checkpoint does not record stays empty. Throws InputError (`path`) when a recorded
+/// value is not a valid number.
+void fill_from_checkpoint(ResumableRequest& request, const RenderCheckpoint& saved, const std::string& path);
+
+/// Throws InputError (`path`) "cannot resume: ..." with one line per checkpoint_differences()
+/// when the render `now` would not go on with `saved`, the checkpoint read from `path`.
+void check_resumable(const RenderCheckpoint& saved, const RenderCheckpoint& now, const std::string& path);
+
+}  // namespace raylab

@@ -1,0 +1,21 @@
+#pragma once
+/// \file
+/// The names of the settings a checkpoint records (image_settings) and a resumed render reads
+/// back (fill_from_checkpoint): one spelling for the writer and the reader, so that a renamed
+/// setting cannot leave old checkpoints unreadable in one place and not the other.
+
+namespace raylab::setting_name {
+
+inline constexpr char kWidth[] = "width";                 ///< image width in pixels
+inline constexpr char kHeight[] = "height";               ///< image height in pixels
+inline constexpr char kSpp[] = "spp";                     ///< samples per pixel
+inline constexpr char kSampler[] = "sampler";             ///< the sampler, resolved ("auto" never)
+inline constexpr char kFilter[] = "filter";               ///< the reconstruction filter
+inline constexpr char kFilterRadius[] = "filter radius";  ///< its half-width in pixels
+inline constexpr char kSeed[] = "seed";                   ///< seed of every random choice
+inline constexpr char kMaxDepth[] = "max depth";          ///< ray tree depth
+inline constexpr char kTileSize[] = "tile size";          ///< tile side in pixels
+inline constexpr char kPasses[] = "passes";               ///< passes over the image
+inline constexpr char kAccel[] = "accel";                 ///< the acceleration structure
+
+}  // namespace raylab::setting_name

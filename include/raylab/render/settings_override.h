@@ -1,0 +1,32 @@
+#pragma once
+/// \file
+/// Render settings given apart from the scene (by a command line, a script or a checkpoint being
+/// resumed), each one replacing the scene's own only when given.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "raylab/scene/render_settings.h"
+
+namespace raylab {
+
+/// The RenderSettings a caller may set over a scene's; an empty member leaves the scene's value.
+struct SettingsOverride {
+  std::optional<int> width;            ///< image width in pixels
+  std::optional<int> height;           ///< image height in pixels
+  std::optional<int> spp;              ///< samples per pixel
+  std::optional<int> max_depth;        ///< ray tree depth
+  std::optional<std::uint64_t> seed;   ///< seed of every random choice
+  std::optional<std::string> sampler;  ///< sampler name (as --sampler)
+  std::optional<std::string> filter;   ///< reconstruction filter name
+  std::optional<float> filter_radius;  ///< filter half-width in pixels
+  std::optional<float> aa_threshold;   ///< adaptive samplers: refinement contrast
+  std::optional<int> aa_depth;         ///< adaptive samplers: subdivision depth
+};
+
+/// Sets every member `over` gives on `settings`, leaving the others as they are. No checks: the
+/// values go through check_sampling_settings and render() as the scene's own would.
+void apply_settings_override(RenderSettings& settings, const SettingsOverride& over);
+
+}  // namespace raylab
