@@ -30,7 +30,6 @@ struct SlotTriangles {
 struct SlotPrimitives {
   static constexpr bool kInlineSpheres = true;  ///< spheres are tested here
 
-
   const std::uint32_t* ids;      ///< the global id of each slot
   const Triangle* triangles;     ///< parallel to ids; valid where the id is a triangle's
   const Sphere* spheres;         ///< parallel to ids; valid where the id is an inline sphere's
