@@ -1,5 +1,5 @@
 // Binned SAH construction (Wald 2007) of a binary BVH, parallel on oneTBB, with optional spatial
-// splits (bvh_spatial_split.cpp).
+// splits (bvh_spatial_split.cpp); the split search itself is in bvh_build_sah.cpp.
 //
 // Where the time goes and why it is laid out so: one 32-byte reference per primitive, sorted in
 // place (no index indirection, no copies); one pass bins all three axes at once with 4-wide
@@ -23,6 +23,7 @@
 #include "bvh_build_box.h"
 #include "bvh_build_partition.h"
 #include "bvh_build_ref.h"
+#include "bvh_build_sah.h"
 #include "bvh_build_unordered.h"
 #include "bvh_depth.h"
 #include "raylab/accel/bvh.h"
@@ -31,12 +32,17 @@
 namespace raylab {
 namespace {
 
+using bvh_build::BinMap;
+using bvh_build::BinSet;
+using bvh_build::Bounds;
 using bvh_build::Box4;
 using bvh_build::BuildRef;
 using bvh_build::CostModel;
 using bvh_build::kMaxBins;
+using bvh_build::kSmallNode;
 using bvh_build::load_hi;
 using bvh_build::load_lo;
+using bvh_build::ObjectSplit;
 using simd::Float4;
 
 using bvh_depth::kMedianFallbackDepth;  // the depth bound the traversal stacks are sized by
@@ -46,236 +52,8 @@ constexpr std::uint32_t kParallelBinning = 16384;
 // Nodes with at least this many references partition in parallel (bvh_build_partition.h).
 constexpr std::uint32_t kParallelPartition = 4 * bvh_build::kPartitionChunk;
 
-// Bounds of a node's references and of their doubled centroids.
-struct Bounds {
-  Box4 box, centroids;
-  void merge(const Bounds& o) {
-    box.extend(o.box);
-    centroids.extend(o.centroids);
-  }
-};
-
-Bounds bounds_of(const BuildRef* refs, std::uint32_t n) {
-  Bounds b;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const Float4 lo = load_lo(refs[i]), hi = load_hi(refs[i]);
-    b.box.extend(lo, hi);
-    const Float4 c = lo + hi;
-    b.centroids.extend(c, c);
-  }
-  return b;
-}
-
-// Per-axis mapping of a doubled centroid to its bin.
-struct BinMap {
-  float lo[4] = {0.f, 0.f, 0.f, 0.f};
-  float scale[4] = {0.f, 0.f, 0.f, 0.f};  // 0 on an axis whose centroids coincide: one bin
-  float hi[4] = {0.f, 0.f, 0.f, 0.f};     // the largest doubled centroid
-  int bins = 2;
-
-  BinMap(const Box4& centroids, int bin_count) : bins(bin_count) {
-    float l[4], h[4];
-    centroids.lo.store(l);
-    centroids.hi.store(h);
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = l[a];
-      hi[a] = h[a];
-      const float s = static_cast<float>(bins) / (h[a] - l[a]);
-      scale[a] = std::isfinite(s) && s > 0.f ? s : 0.f;
-    }
-  }
-  int bin(float c2, int axis) const { return std::clamp(static_cast<int>((c2 - lo[axis]) * scale[axis]), 0, bins - 1); }
-};
-
-// A bin's box as plain floats (32 bytes), so that arrays of bins can stay uninitialised.
-struct BinBox {
-  float lo[4], hi[4];
-
-  void clear() {
-    Float4::broadcast(INFINITY).store(lo);
-    Float4::broadcast(-INFINITY).store(hi);
-  }
-  void extend(Float4 l, Float4 h) {
-    min(l, Float4::load(lo)).store(lo);
-    max(h, Float4::load(hi)).store(hi);
-  }
-  void extend(const BinBox& b) { extend(Float4::load(b.lo), Float4::load(b.hi)); }
-  Box4 box4() const { return {Float4::load(lo), Float4::load(hi)}; }
-};
-
-// Boxes and counts of every bin on every axis (6.9 KB at 64 bins). Only the first `bins` of
-// each axis are initialised: with the default 16 bins, clearing all 64 would cost more than the
-// binning itself in the many small nodes near the leaves.
-struct BinSet {
-  BinBox box[3][kMaxBins];
-  std::uint32_t count[3][kMaxBins];
-  int bins;
-
-  explicit BinSet(int bin_count) : bins(bin_count) {
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < bins; ++b) {
-        box[a][b].clear();
-        count[a][b] = 0;
-      }
-  }
-
-  // The bin index is clamped as a float, before the conversion: for the references of the node
-  // the scaled centroid lies in [0, bins] (the map comes from their own centroid bounds), where
-  // this gives what clamping the converted integer gives, at the cost of two vector operations
-  // instead of six scalar ones. A NaN goes to bin 0 (max returns its second operand).
-  void add_one(const BuildRef& r, Float4 lo4, Float4 scale4, Float4 last) {
-    const Float4 lo = load_lo(r), hi = load_hi(r);
-    float f[4];
-    min(max((lo + hi - lo4) * scale4, Float4::broadcast(0.f)), last).store(f);
-    for (int a = 0; a < 3; ++a) {
-      const int b = static_cast<int>(f[a]);
-      box[a][b].extend(lo, hi);
-      ++count[a][b];
-    }
-  }
-  void add(const BuildRef* refs, std::uint32_t n, const BinMap& map) {
-    const Float4 lo4 = Float4::load(map.lo), scale4 = Float4::load(map.scale);
-    const Float4 last = Float4::broadcast(static_cast<float>(bins - 1));
-    for (std::uint32_t i = 0; i < n; ++i) add_one(refs[i], lo4, scale4, last);
-  }
-  void merge(const BinSet& o) {
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < bins; ++b) {
-        box[a][b].extend(o.box[a][b]);
-        count[a][b] += o.count[a][b];
-      }
-  }
-};
-
-struct ObjectSplit {
-  int axis = -1;
-  int bin = 0;  // references in bins [0, bin) go left
-  float cost = INFINITY;
-  Box4 left, right;  // the children's boxes, unions of their bins
-};
-
-// Sets `best.cost` from the `split_areas` of the best candidate. A NaN cost means no split: it
-// happens where the node's area is 0, and then every candidate's cost is NaN.
-void finish_cost(ObjectSplit& best, float best_areas, float parent_area, const CostModel& cost) {
-  best.cost = cost.split_cost(best_areas, parent_area);
-  if (std::isnan(best.cost)) best = ObjectSplit{};
-  if (!(parent_area > 0.f) && best.axis >= 0) best.cost = 0.f;  // flat: any valid split helps
-}
-
-// Evaluates the bin boundaries on every axis; cost is relative to the parent's area. Only
-// boundaries right after a non-empty bin are evaluated: the others repeat the split (same
-// sides, same boxes, same cost) of the boundary before them, which the strict `<` would keep
-// anyway, so skipping them changes nothing but the time spent on small nodes. Candidates are
-// compared by `split_areas`, which orders them as their costs do, without a division each.
-ObjectSplit best_object_split(const BinSet& set, float parent_area, const CostModel& cost) {
-  ObjectSplit best;
-  float best_areas = INFINITY;
-  const int bins = set.bins;
-  float right_area[kMaxBins];
-  std::uint32_t right_count[kMaxBins];
-  for (int axis = 0; axis < 3; ++axis) {
-    const BinBox* box = set.box[axis];
-    const std::uint32_t* count = set.count[axis];
-    Box4 acc;
-    std::uint32_t n = 0;
-    for (int b = bins - 1; b > 0; --b) {
-      if (count[b] != 0) {  // an empty bin's box is empty
-        acc.extend(box[b].box4());
-        n += count[b];
-      }
-      if (count[b - 1] != 0) {
-        right_area[b] = area(acc);
-        right_count[b] = n;
-      }
-    }
-    acc = Box4{};
-    n = 0;
-    for (int b = 1; b < bins; ++b) {
-      if (count[b - 1] == 0) continue;
-      acc.extend(box[b - 1].box4());
-      n += count[b - 1];
-      if (right_count[b] == 0) continue;
-      const float c = cost.split_areas(area(acc), n, right_area[b], right_count[b]);
-      if (c < best_areas) {
-        best.axis = axis;
-        best.bin = b;
-        best_areas = c;
-      }
-    }
-  }
-  if (best.axis < 0) return best;
-  for (int b = 0; b < bins; ++b) {
-    if (set.count[best.axis][b] != 0) (b < best.bin ? best.left : best.right).extend(set.box[best.axis][b].box4());
-  }
-  finish_cost(best, best_areas, parent_area, cost);
-  return best;
-}
-
-// Nodes with at most this many references find their split without bins (small_object_split).
-constexpr std::uint32_t kSmallNode = 16;
 // Only nodes with more references than this look for a spatial split.
 constexpr std::uint32_t kSpatialSplitMin = 10;
-
-// The split best_object_split would find, for a node of few references, computed from the
-// references directly: on each axis they are ordered by bin, and each boundary between two
-// occupied bins is evaluated with the same unions (min/max are exact, so the same floats), the
-// same counts and the same tie order as the binned sweep. The tree is therefore the same; the
-// cost is O(count) boxes per axis instead of clearing and sweeping every bin.
-ObjectSplit small_object_split(const BuildRef* refs, std::uint32_t count, const BinMap& map, float parent_area,
-                               const CostModel& cost) {
-  ObjectSplit best;
-  float best_areas = INFINITY;
-  Float4 lo[kSmallNode], hi[kSmallNode];
-  int bin[3][kSmallNode];  // every reference's bin on every axis, computed as BinSet::add does
-  const Float4 lo4 = Float4::load(map.lo), scale4 = Float4::load(map.scale);
-  const Float4 last = Float4::broadcast(static_cast<float>(map.bins - 1));
-  for (std::uint32_t i = 0; i < count; ++i) {
-    lo[i] = load_lo(refs[i]);
-    hi[i] = load_hi(refs[i]);
-    float f[4];
-    min(max((lo[i] + hi[i] - lo4) * scale4, Float4::broadcast(0.f)), last).store(f);
-    for (int a = 0; a < 3; ++a) bin[a][i] = static_cast<int>(f[a]);
-  }
-  float right_area[kSmallNode];
-  for (int axis = 0; axis < 3; ++axis) {
-    // Indices ordered by bin, stably (equal bins keep index order), each placed at its rank:
-    // the number of references before it. Branch-free on purpose: an insertion sort here
-    // mispredicted about once per reference, a fifth of all the build's mispredictions.
-    const int* b = bin[axis];
-    std::uint8_t order[kSmallNode];
-    for (std::uint32_t i = 0; i < count; ++i) {
-      std::uint32_t rank = 0;
-      for (std::uint32_t j = 0; j < count; ++j)
-        rank += static_cast<std::uint32_t>(int(b[j] < b[i]) | (int(b[j] == b[i]) & int(j < i)));
-      order[rank] = static_cast<std::uint8_t>(i);
-    }
-    if (b[order[0]] == b[order[count - 1]]) continue;  // one occupied bin: no split on this axis
-    // The sweeps evaluate every position and discard those that are no boundary between bins,
-    // again without branching on the bins.
-    Box4 acc;
-    for (std::uint32_t k = count - 1; k > 0; --k) {
-      acc.extend(lo[order[k]], hi[order[k]]);
-      right_area[k] = area(acc);  // read at boundaries only
-    }
-    acc = Box4{};
-    for (std::uint32_t k = 0; k + 1 < count; ++k) {
-      acc.extend(lo[order[k]], hi[order[k]]);
-      const bool boundary = b[order[k]] != b[order[k + 1]];
-      const float split = cost.split_areas(area(acc), k + 1, right_area[k + 1], count - k - 1);
-      const float c = boundary ? split : INFINITY;
-      if (c < best_areas) {
-        best.axis = axis;
-        best.bin = b[order[k]] + 1;
-        best_areas = c;
-      }
-    }
-  }
-  if (best.axis < 0) return best;
-  for (std::uint32_t i = 0; i < count; ++i)
-    (bin[best.axis][i] < best.bin ? best.left : best.right).extend(lo[i], hi[i]);
-  finish_cost(best, best_areas, parent_area, cost);
-  return best;
-}
 
 // A node's references [begin, end), and the room up to `capacity` it may fill with the extra
 // references of spatial splits (capacity == end without them).
