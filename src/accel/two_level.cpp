@@ -6,30 +6,9 @@
 #include <map>
 #include <vector>
 
-#include "raylab/core/error.h"
 #include "raylab/core/stopwatch.h"
-#include "traversal_common.h"
 
 namespace raylab {
-
-WrapMode parse_wrap_mode(std::string_view name) {
-  if (name == "none") return WrapMode::kNone;
-  if (name == "box") return WrapMode::kBox;
-  if (name == "sphere") return WrapMode::kSphere;
-  throw UsageError("unknown wrap mode '" + std::string(name) + "' (valid: none, box, sphere)");
-}
-
-std::string_view wrap_mode_name(WrapMode mode) {
-  switch (mode) {
-    case WrapMode::kNone:
-      return "none";
-    case WrapMode::kBox:
-      return "box";
-    case WrapMode::kSphere:
-      return "sphere";
-  }
-  return "none";
-}
 
 namespace {
 
@@ -43,26 +22,10 @@ thread_local TraversalStats* t_count_sink = nullptr;
 // (prototype ids, shifted by `id_base` on the way out).
 struct Group {
   const Accelerator* accel = nullptr;
-  WrapMode wrap = WrapMode::kNone;
-  Box3 box;       // world space
-  Sphere sphere;  // world space, when wrap == kSphere
+  BoundingWrapper wrapper;  // world space
   const Instance* instance = nullptr;
   std::uint32_t id_base = 0;
 };
-
-// True when the segment [tmin, tmax] of the ray meets the solid ball (enlarged a little at build).
-bool ray_meets_ball(const Sphere& s, const Ray& ray) {
-  const Vec3 f = ray.origin - s.center;
-  const float a = dot(ray.direction, ray.direction);
-  const float b = dot(f, ray.direction);
-  const Vec3 l = f - ray.direction * (b / a);  // centre to its foot on the ray line
-  const float r2 = s.radius * s.radius;
-  const float d2 = dot(l, l);
-  if (!(d2 <= r2)) return false;
-  const float half = std::sqrt((r2 - d2) / a);
-  const float t_mid = -b / a;
-  return t_mid - half <= ray.tmax && t_mid + half >= ray.tmin;
-}
 
 // The wrapper test a ray pays before entering the group's own structure.
 bool enters_wrapper(const Group& g, const Ray& ray) {
@@ -70,14 +33,9 @@ bool enters_wrapper(const Group& g, const Ray& ray) {
     // The top level counted this item as a primitive test; it is a bounding-volume test, or,
     // unwrapped, no test at all (the ray goes straight into the instance's structure).
     --t_count_sink->prim_tests;
-    if (g.wrap != WrapMode::kNone) ++t_count_sink->volume_tests;
+    if (g.wrapper.mode != WrapMode::kNone) ++t_count_sink->volume_tests;
   }
-  if (g.wrap == WrapMode::kSphere) return ray_meets_ball(g.sphere, ray);
-  if (g.wrap == WrapMode::kBox) {
-    float t_enter;
-    return intersect_box(g.box, ray.origin, safe_reciprocal(ray.direction), ray.tmin, ray.tmax * kSlabWiden, t_enter);
-  }
-  return true;
+  return g.wrapper.admits(ray);
 }
 
 Ray to_local(const Instance& inst, const Ray& ray) {
@@ -136,30 +94,6 @@ bool group_occluded(const void* context, const Ray& ray) {
   return sub_occluded(*g.accel, g.instance == nullptr ? ray : to_local(*g.instance, ray));
 }
 
-// A sphere around points: centre of their box, radius to the farthest one.
-Sphere sphere_around(const std::vector<Vec3>& points) {
-  Box3 box;
-  for (Vec3 p : points) box.extend(p);
-  const Vec3 c = box.center();
-  float r2 = 0.f;
-  for (Vec3 p : points) r2 = std::max(r2, dot(p - c, p - c));
-  // Enlarged a little, so that rounding in the ray-ball test never rejects a ray that grazes it.
-  return {c, std::sqrt(r2) * (1.f + 1e-5f) + 1e-30f};
-}
-
-// Points whose hull contains primitive `id` (triangle corners; the box corners of other shapes).
-void hull_points(const Geometry& g, std::uint32_t id, std::vector<Vec3>& out) {
-  const ShapeRef r = g.resolve(id);
-  if (r.kind == ShapeKind::kTriangle) {
-    const Triangle& t = g.triangles[r.index];
-    out.insert(out.end(), {t.p0, t.p1, t.p2});
-    return;
-  }
-  const Box3 b = g.bounds(id);
-  for (int c = 0; c < 8; ++c)
-    out.push_back({c & 1 ? b.hi.x : b.lo.x, c & 2 ? b.hi.y : b.lo.y, c & 4 ? b.hi.z : b.lo.z});
-}
-
 Geometry copy_shapes(const Geometry& g) {
   Geometry out;
   out.triangles = g.triangles;
@@ -207,11 +141,11 @@ class TwoLevel final : public Accelerator {
       m_bottoms.push_back(make_accelerator(bottom, m_top, ids, m_options.config));
       Group g;
       g.accel = m_bottoms.back().get();
-      g.wrap = m_options.wrap;
-      g.box = g.accel->bounds();
+      g.wrapper.mode = m_options.wrap;
+      g.wrapper.box = g.accel->bounds();
       std::vector<Vec3> points;
-      for (std::uint32_t id : ids) hull_points(m_top, id, points);
-      g.sphere = sphere_around(points);
+      for (std::uint32_t id : ids) append_hull_points(m_top, id, points);
+      g.wrapper.sphere = sphere_around(points);
       m_groups.push_back(g);
     }
 
@@ -231,20 +165,20 @@ class TwoLevel final : public Accelerator {
       g.accel = prototype_accel[inst.prototype];
       // Without wrapping the instance is still one item (its geometry lives in its own space), but
       // a ray enters it without a bounding-volume test of its own.
-      g.wrap = m_options.wrap;
+      g.wrapper.mode = m_options.wrap;
       g.instance = &inst;
       g.id_base = flat.size() + inst.first_prim_offset;
       std::vector<Vec3> points;
-      for (std::uint32_t id = 0; id < proto.size(); ++id) hull_points(proto, id, points);
+      for (std::uint32_t id = 0; id < proto.size(); ++id) append_hull_points(proto, id, points);
       for (Vec3& p : points) p = inst.to_world.point(p);
-      for (Vec3 p : points) g.box.extend(p);
-      g.sphere = sphere_around(points);
+      for (Vec3 p : points) g.wrapper.box.extend(p);
+      g.wrapper.sphere = sphere_around(points);
       m_groups.push_back(g);
     }
     for (std::size_t i = 0; i < m_groups.size(); ++i) {
       GroupShape shape;
-      shape.box = m_groups[i].box;
-      if (m_options.wrap == WrapMode::kSphere) shape.sphere = m_groups[i].sphere;
+      shape.box = m_groups[i].wrapper.box;
+      if (m_options.wrap == WrapMode::kSphere) shape.sphere = m_groups[i].wrapper.sphere;
       shape.context = &m_groups[i];
       shape.intersect = group_intersect;
       shape.occluded = group_occluded;

@@ -11,23 +11,12 @@
 #include <string_view>
 
 #include "raylab/accel/accelerator.h"
+#include "raylab/accel/bounding_wrapper.h"
 #include "raylab/accel/factory.h"
 #include "raylab/geometry/geometry.h"
 #include "raylab/geometry/instance.h"
 
 namespace raylab {
-
-/// What wraps each mesh or instance (`--wrap`).
-enum class WrapMode : std::uint8_t {
-  kNone,    ///< meshes go into the top level primitive by primitive; instances are entered directly
-  kBox,     ///< each mesh and instance is one top-level item behind its bounding box
-  kSphere,  ///< each mesh and instance is one top-level item behind a bounding sphere
-};
-
-/// Parses "none", "box" or "sphere"; throws UsageError listing them otherwise.
-WrapMode parse_wrap_mode(std::string_view name);
-/// The name of a wrap mode ("none", "box", "sphere").
-std::string_view wrap_mode_name(WrapMode mode);
 
 /// How to build a scene's structure.
 struct SceneAccelOptions {
