@@ -294,37 +294,44 @@ void load_packet(std::span<const Ray> rays, Packet& p, int (&valid)[16]) {
   }
 }
 
-}  // namespace
-
-void EmbreeReference::intersect16(std::span<const Ray> rays, std::span<Hit> hits) const {
+// Calls `trace(context, b, n, valid, packet)` for each run of up to 16 rays [b, b + n) loaded
+// into a fresh Embree packet of type Packet (`rays_of(packet)` is its ray part) with the valid
+// mask, under one coherent context: the rays of a packet come from neighbouring pixels.
+template <class Packet, class RaysOf, class Trace>
+void for_each_packet16(std::span<const Ray> rays, RaysOf rays_of, Trace trace) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
   for (std::size_t b = 0; b < rays.size(); b += 16) {
     const std::size_t n = std::min<std::size_t>(16, rays.size() - b);
-    RTCRayHit16 rh;
+    Packet packet;
     alignas(64) int valid[16];  // Embree may load the mask as one 64-byte vector
-    load_packet(rays.subspan(b, n), rh.ray, valid);
-    for (int k = 0; k < 16; ++k) rh.hit.geomID[k] = rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect16(valid, m->scene, &context, &rh);
-    for (std::size_t k = 0; k < n; ++k) {
-      hits[b + k] = m->hit_of(rh.hit.geomID[k], rh.hit.primID[k], rh.ray.tfar[k], rh.hit.u[k], rh.hit.v[k]);
-    }
+    load_packet(rays.subspan(b, n), rays_of(packet), valid);
+    trace(context, b, n, valid, packet);
   }
 }
 
+}  // namespace
+
+void EmbreeReference::intersect16(std::span<const Ray> rays, std::span<Hit> hits) const {
+  for_each_packet16<RTCRayHit16>(
+      rays, [](RTCRayHit16& rh) -> RTCRay16& { return rh.ray; },
+      [&](RTCIntersectContext& context, std::size_t b, std::size_t n, int(&valid)[16], RTCRayHit16& rh) {
+        for (int k = 0; k < 16; ++k) rh.hit.geomID[k] = rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect16(valid, m->scene, &context, &rh);
+        for (std::size_t k = 0; k < n; ++k) {
+          hits[b + k] = m->hit_of(rh.hit.geomID[k], rh.hit.primID[k], rh.ray.tfar[k], rh.hit.u[k], rh.hit.v[k]);
+        }
+      });
+}
+
 void EmbreeReference::occluded16(std::span<const Ray> rays, std::span<std::uint8_t> occluded) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  for (std::size_t b = 0; b < rays.size(); b += 16) {
-    const std::size_t n = std::min<std::size_t>(16, rays.size() - b);
-    RTCRay16 r;
-    alignas(64) int valid[16];  // Embree may load the mask as one 64-byte vector
-    load_packet(rays.subspan(b, n), r, valid);
-    rtcOccluded16(valid, m->scene, &context, &r);
-    for (std::size_t k = 0; k < n; ++k) occluded[b + k] = r.tfar[k] == -kInf ? 1 : 0;
-  }
+  for_each_packet16<RTCRay16>(
+      rays, [](RTCRay16& r) -> RTCRay16& { return r; },
+      [&](RTCIntersectContext& context, std::size_t b, std::size_t n, int(&valid)[16], RTCRay16& r) {
+        rtcOccluded16(valid, m->scene, &context, &r);
+        for (std::size_t k = 0; k < n; ++k) occluded[b + k] = r.tfar[k] == -kInf ? 1 : 0;
+      });
 }
 
 double EmbreeReference::binary_sah_cost(const BvhConfig& config) const {
