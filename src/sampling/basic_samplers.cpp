@@ -22,10 +22,8 @@ Pcg32 sample_rng(std::uint64_t seed, int px, int py, int index) {
 
 Sample2 CenterSampler::sample(int /*px*/, int /*py*/, int /*index*/) const { return {0.5f, 0.5f}; }
 
-RegularSampler::RegularSampler(int n, std::uint64_t seed) : PixelSampler(n * n, seed), m_n(n) {}
-
 Sample2 RegularSampler::sample(int /*px*/, int /*py*/, int index) const {
-  return {point_in_interval(index % m_n, 0.5f, m_n), point_in_interval(index / m_n, 0.5f, m_n)};
+  return {point_in_interval(column(index), 0.5f, strata()), point_in_interval(row(index), 0.5f, strata())};
 }
 
 Sample2 RandomSampler::sample(int px, int py, int index) const {
@@ -35,19 +33,17 @@ Sample2 RandomSampler::sample(int px, int py, int index) const {
   return {x, y};
 }
 
-JitteredGridSampler::JitteredGridSampler(int n, std::uint64_t seed) : PixelSampler(n * n, seed), m_n(n) {}
-
 Sample2 JitteredGridSampler::sample(int px, int py, int index) const {
   Pcg32 rng = sample_rng(seed(), px, py, index);
-  const int sx = index % m_n;
-  const int sy = index / m_n;
+  const int sx = column(index);
+  const int sy = row(index);
   // The same float expressions as the original JitteredSampler, so reference images keep their
   // pixels. Float rounding can put (sx + u) / n on the next stratum's edge (1.0 for the last);
   // the clamp moves only those rare values back inside their stratum.
-  const float n = static_cast<float>(m_n);
+  const float n = static_cast<float>(strata());
   const float x = (static_cast<float>(sx) + rng.next_float()) / n;
   const float y = (static_cast<float>(sy) + rng.next_float()) / n;
-  return {clamp_to_interval(x, sx, m_n), clamp_to_interval(y, sy, m_n)};
+  return {clamp_to_interval(x, sx, strata()), clamp_to_interval(y, sy, strata())};
 }
 
 }  // namespace raylab
