@@ -6,6 +6,7 @@
 
 #include "basic_samplers.h"
 #include "cmj_sampler.h"
+#include "jittered_sampler.h"
 #include "raylab/core/error.h"
 #include "raylab/core/rng.h"
 #include "raylab/sampling/pixel_sampler.h"
