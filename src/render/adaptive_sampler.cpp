@@ -17,6 +17,7 @@
 #include "raylab/render/adaptive.h"
 #include "raylab/sampling/multi_jittered_pattern.h"
 #include "raylab/sampling/pixel_sampler.h"  // Sample2
+#include "raylab/sampling/seed_salts.h"
 #include "raylab/sampling/stratum.h"
 #include "render_workers.h"
 #include "sample_contrast.h"
@@ -200,11 +201,12 @@ class AdaptiveRenderer {
 
   int base_index(int px, int py) const {
     return static_cast<int>(
-        hash_seed(m_seed ^ 0xba5eull, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py)) % kPatternSize);
+        hash_seed(m_seed ^ kAdaptiveBaseSampleSalt, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py)) %
+        kPatternSize);
   }
 
   std::uint64_t path_seed(int px, int py, std::uint64_t key) const {
-    return hash_seed(m_seed ^ 0xada9717eull, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py), key);
+    return hash_seed(m_seed ^ kAdaptivePathSalt, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py), key);
   }
 
   CellSample trace_at(const TraceContext& ctx, int px, int py, Sample2 u, int level, std::uint64_t key) const {
@@ -227,7 +229,7 @@ class AdaptiveRenderer {
   // A jittered sample in cell (level, cx, cy) (levels beyond the pattern).
   CellSample jittered_sample(const TraceContext& ctx, int px, int py, int level, int cx, int cy) const {
     const std::uint64_t key = (std::uint64_t(level) << 40) | (std::uint64_t(cy) << 20) | std::uint64_t(cx);
-    Pcg32 rng(hash_seed(m_seed, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py), key));
+    Pcg32 rng(hash_seed(m_seed ^ kUnsaltedSeed, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py), key));
     const float u = rng.next_float();
     const float v = rng.next_float();
     const Sample2 p{point_in_interval(cx, u, 1 << level), point_in_interval(cy, v, 1 << level)};

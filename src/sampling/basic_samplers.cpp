@@ -1,18 +1,11 @@
 #include "basic_samplers.h"
 
 #include "raylab/core/rng.h"
+#include "raylab/sampling/seed_salts.h"
 #include "raylab/sampling/stratum.h"
 #include "sample_rng.h"
 
 namespace raylab {
-
-namespace {
-
-/// Keeps the random sampler's draws apart from the jittered sampler's, which hash the same
-/// (seed, pixel, index) without a salt.
-constexpr std::uint64_t kRandomSalt = 0x7a4d0c3e91b25f68ull;
-
-}  // namespace
 
 Sample2 CenterSampler::sample(int /*px*/, int /*py*/, int /*index*/) const { return {0.5f, 0.5f}; }
 
@@ -21,7 +14,7 @@ Sample2 RegularSampler::sample(int /*px*/, int /*py*/, int index) const {
 }
 
 Sample2 RandomSampler::sample(int px, int py, int index) const {
-  Pcg32 rng = detail::sample_rng(seed() ^ kRandomSalt, px, py, index);
+  Pcg32 rng = detail::sample_rng(seed() ^ kRandomSamplerSalt, px, py, index);
   const float x = rng.next_float();  // next_float() is already in [0, 1)
   const float y = rng.next_float();
   return {x, y};

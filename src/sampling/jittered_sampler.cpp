@@ -1,13 +1,14 @@
 #include "jittered_sampler.h"
 
 #include "raylab/core/rng.h"
+#include "raylab/sampling/seed_salts.h"
 #include "raylab/sampling/stratum.h"
 #include "sample_rng.h"
 
 namespace raylab {
 
 Sample2 JitteredGridSampler::sample(int px, int py, int index) const {
-  Pcg32 rng = detail::sample_rng(seed(), px, py, index);
+  Pcg32 rng = detail::sample_rng(seed() ^ kUnsaltedSeed, px, py, index);
   const int sx = column(index);
   const int sy = row(index);
   // The same float expressions as the original JitteredSampler, so reference images keep their

@@ -4,6 +4,7 @@
 #include <cstddef>
 
 #include "raylab/core/rng.h"
+#include "raylab/sampling/seed_salts.h"
 #include "raylab/sampling/stratum.h"
 
 namespace raylab {
@@ -19,7 +20,8 @@ constexpr std::array<std::array<std::uint8_t, 4>, 24> kPermutations4 = {
 }  // namespace
 
 MultiJitteredPattern::MultiJitteredPattern(std::uint64_t seed, int px, int py)
-    : m_key(hash_seed(seed ^ 0x3a17ull, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py))) {}
+    : m_key(hash_seed(seed ^ kMultiJitteredPatternSalt, static_cast<std::uint64_t>(px),
+                      static_cast<std::uint64_t>(py))) {}
 
 Sample2 MultiJitteredPattern::sample(int i) const {
   const int cx = i & 3;
