@@ -10,6 +10,7 @@
 #include "raylab/core/rng.h"
 #include "raylab/geometry/shading.h"
 #include "raylab/render/camera.h"
+#include "raylab/sampling/seed_salts.h"
 
 namespace raylab {
 namespace {
@@ -18,10 +19,6 @@ namespace {
 // light lying on a surface is not shadowed by that surface.
 constexpr float kShadowShorten = 1e-3f;
 constexpr float kTwoPi = 6.2831853f;
-
-// Stream tags, so the light sample and the bounce of one pixel use independent random numbers.
-constexpr std::uint64_t kLightStream = 1;
-constexpr std::uint64_t kBounceStream = 2;
 
 // A point on `light` seen from `p`, chosen by `rng`; for a sphere, on the half facing `p`.
 Vec3 light_point(const Light& light, Vec3 p, Pcg32& rng) {
@@ -142,10 +139,10 @@ void add_secondary_rays(const Scene& scene, const Accelerator& reference, const 
       const Vec3 ng = si.geometric_normal;
       const std::uint64_t pixel = primary.pixel[i];
       if (light) {
-        Pcg32 rng(hash_seed(pixel, seed, kLightStream));
+        Pcg32 rng(hash_seed(pixel, seed, kRaySetLightStream));
         has_shadow[i] = shadow_ray(*light, si.position, ng, rng, shadow[i]) ? 1 : 0;
       }
-      Pcg32 rng(hash_seed(pixel, seed, kBounceStream));
+      Pcg32 rng(hash_seed(pixel, seed, kRaySetBounceStream));
       const Vec3 dir = cosine_direction(ng, rng);
       diffuse[i].origin = offset_origin(si.position, ng, dir);
       diffuse[i].direction = dir;

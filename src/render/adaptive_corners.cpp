@@ -6,7 +6,9 @@
 #include <cmath>
 #include <vector>
 
+#include "raylab/core/rng.h"
 #include "raylab/render/adaptive.h"
+#include "raylab/sampling/seed_salts.h"
 #include "render_workers.h"
 #include "sample_contrast.h"
 
@@ -61,9 +63,10 @@ class CornerRenderer {
   // lights) are seeded by its position, so a point shared by two pixels has one colour.
   Color trace(const TraceContext& ctx, long gx, long gy) const {
     const float scale = 1.f / static_cast<float>(m_n);
-    return detail::trace_image_position(ctx, m_camera, static_cast<float>(gx) * scale, static_cast<float>(gy) * scale,
-                                        hash_seed(m_scene.settings.seed ^ 0xc0e7e5ull, static_cast<std::uint64_t>(gx),
-                                                  static_cast<std::uint64_t>(gy), static_cast<std::uint64_t>(m_n)));
+    return detail::trace_image_position(
+        ctx, m_camera, static_cast<float>(gx) * scale, static_cast<float>(gy) * scale,
+        hash_seed(m_scene.settings.seed ^ kAdaptiveCornersPathSalt, static_cast<std::uint64_t>(gx),
+                  static_cast<std::uint64_t>(gy), static_cast<std::uint64_t>(m_n)));
   }
 
   // Corners of tile `r`: those at (x, y) with x0 <= x < x1 and y0 <= y < y1, plus the image's

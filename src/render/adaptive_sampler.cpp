@@ -13,8 +13,11 @@
 #include <memory>
 #include <vector>
 
+#include "raylab/core/rng.h"
 #include "raylab/render/adaptive.h"
+#include "raylab/sampling/multi_jittered_pattern.h"
 #include "raylab/sampling/pixel_sampler.h"  // Sample2
+#include "raylab/sampling/seed_salts.h"
 #include "raylab/sampling/stratum.h"
 #include "render_workers.h"
 #include "sample_contrast.h"
@@ -32,46 +35,12 @@ constexpr std::array<float, kMaxDepth + 1> kCellArea = {
     1.f, 0.25f, 0.0625f, 0.015625f, 0.00390625f, 0.0009765625f, 0.000244140625f, 6.103515625e-05f, 1.52587890625e-05f};
 // Every refined pixel gets the pattern's levels (as far as the depth allows) whatever it finds:
 // 4 x 4 strata, the stratification of 16-spp jittered sampling; deeper levels only where a
-// quarter's samples still differ. The pattern's two levels take their 16 positions from a
-// multi-jittered pattern (Chiu, Shirley and Wang 1994): one sample in each of the 4 x 4 cells
-// like jittered sampling, and one in each of the 16 columns and 16 rows of width 1/16 as well,
-// which halves the error on edges near the axes. Sample i lies in cell (i % 4, i / 4).
-constexpr int kPatternSize = 16;
+// quarter's samples still differ. The pattern's two levels take their 16 positions from the
+// pixel's MultiJitteredPattern, whose sample i lies in cell (i % 4, i / 4).
+constexpr int kPatternSize = MultiJitteredPattern::kSize;
 constexpr int kPatternLevels = 2;
 // Refined pixels go to the workers in batches of this many.
 constexpr int kBatch = 64;
-
-// The 24 orderings of 0..3.
-constexpr std::array<std::array<std::uint8_t, 4>, 24> kPermutations4 = {
-    {{0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {0, 3, 2, 1}, {1, 0, 2, 3}, {1, 0, 3, 2},
-     {1, 2, 0, 3}, {1, 2, 3, 0}, {1, 3, 0, 2}, {1, 3, 2, 0}, {2, 0, 1, 3}, {2, 0, 3, 1}, {2, 1, 0, 3}, {2, 1, 3, 0},
-     {2, 3, 0, 1}, {2, 3, 1, 0}, {3, 0, 1, 2}, {3, 0, 2, 1}, {3, 1, 0, 2}, {3, 1, 2, 0}, {3, 2, 0, 1}, {3, 2, 1, 0}}};
-
-// A pixel's multi-jittered pattern: per column of cells a random ordering of the four
-// sub-columns its cells use, per row of cells one of the four sub-rows, and a uniform offset in
-// each sample's 1/16 x 1/16 square. Each sample is computable on its own.
-class MultiJitteredPattern {
- public:
-  MultiJitteredPattern(std::uint64_t seed, int px, int py)
-      : m_key(hash_seed(seed ^ 0x3a17ull, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py))) {}
-
-  Sample2 sample(int i) const {
-    const int cx = i & 3;
-    const int cy = i >> 2;
-    // Eight 5-bit fields of the key pick the orderings of the 4 columns and the 4 rows.
-    const auto& column_order = kPermutations4[((m_key >> (5 * cx)) & 31u) % 24u];
-    const auto& row_order = kPermutations4[((m_key >> (20 + 5 * cy)) & 31u) % 24u];
-    Pcg32 rng(m_key ^ mix64(static_cast<std::uint64_t>(i) + 1u));
-    const float u = rng.next_float();
-    const float v = rng.next_float();
-    // Kept inside its 1/16 column and row: (k + u) / 16 in float can round onto the next one.
-    return {point_in_interval(4 * cx + column_order[static_cast<std::size_t>(cy)], u, 16),
-            point_in_interval(4 * cy + row_order[static_cast<std::size_t>(cx)], v, 16)};
-  }
-
- private:
-  std::uint64_t m_key;
-};
 
 // One traced sample: its colour and what it hit.
 struct TracedSample {
@@ -232,11 +201,12 @@ class AdaptiveRenderer {
 
   int base_index(int px, int py) const {
     return static_cast<int>(
-        hash_seed(m_seed ^ 0xba5eull, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py)) % kPatternSize);
+        hash_seed(m_seed ^ kAdaptiveBaseSampleSalt, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py)) %
+        kPatternSize);
   }
 
   std::uint64_t path_seed(int px, int py, std::uint64_t key) const {
-    return hash_seed(m_seed ^ 0xada9717eull, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py), key);
+    return hash_seed(m_seed ^ kAdaptivePathSalt, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py), key);
   }
 
   CellSample trace_at(const TraceContext& ctx, int px, int py, Sample2 u, int level, std::uint64_t key) const {
@@ -259,7 +229,7 @@ class AdaptiveRenderer {
   // A jittered sample in cell (level, cx, cy) (levels beyond the pattern).
   CellSample jittered_sample(const TraceContext& ctx, int px, int py, int level, int cx, int cy) const {
     const std::uint64_t key = (std::uint64_t(level) << 40) | (std::uint64_t(cy) << 20) | std::uint64_t(cx);
-    Pcg32 rng(hash_seed(m_seed, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py), key));
+    Pcg32 rng(hash_seed(m_seed ^ kUnsaltedSeed, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py), key));
     const float u = rng.next_float();
     const float v = rng.next_float();
     const Sample2 p{point_in_interval(cx, u, 1 << level), point_in_interval(cy, v, 1 << level)};

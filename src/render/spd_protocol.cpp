@@ -13,6 +13,7 @@
 
 #include "raylab/render/camera.h"
 #include "raylab/render/whitted.h"
+#include "raylab/sampling/seed_salts.h"
 
 namespace raylab {
 
@@ -70,7 +71,7 @@ SpdProtocolResult render_spd_protocol(Scene& scene, const Accelerator& accel, Fi
         for (int x = 0; x < corners; ++x) {
           // SPD scenes have point lights only; the generator is there for area lights, seeded
           // by the corner so the image is the same for any thread count.
-          Pcg32 rng(hash_seed(settings.seed, static_cast<std::uint64_t>(y) * corners + x));
+          Pcg32 rng(hash_seed(settings.seed ^ kUnsaltedSeed, static_cast<std::uint64_t>(y) * corners + x));
           const Ray ray = camera.generate(static_cast<float>(x), static_cast<float>(y));
           corner[static_cast<std::size_t>(y) * corners + x] =
               WhittedIntegrator::trace(ctx, ray, 1, RayKind::kPrimary, rng);

@@ -1,8 +1,12 @@
 #pragma once
 /// \file
-/// The simple pixel samplers: center, regular grid, independent random and jittered.
+/// The simple pixel samplers: center, regular grid and independent random. Jittered sampling
+/// has its own file (jittered_sampler.h).
 /// Internal to the library; created by name through make_pixel_sampler().
 
+#include <cstdint>
+
+#include "grid_sampler.h"
 #include "raylab/sampling/pixel_sampler.h"
 
 namespace raylab {
@@ -20,17 +24,14 @@ class CenterSampler final : public PixelSampler {
 
 /// n * n samples at the centres of an n x n grid of strata, the same in every pixel. Sample
 /// `index` lies in column index % n, row index / n.
-class RegularSampler final : public PixelSampler {
+class RegularSampler final : public GridSampler {
  public:
   /// `n` strata along each axis (n >= 1; spp = n * n).
-  RegularSampler(int n, std::uint64_t seed);
+  RegularSampler(int n, std::uint64_t seed) : GridSampler(n, seed) {}
   /// The centre of stratum (index % n, index / n).
   Sample2 sample(int px, int py, int index) const override;
   /// "regular".
   std::string_view name() const override { return "regular"; }
-
- private:
-  int m_n;
 };
 
 /// Independent uniform samples: each (pixel, index, seed) hashes to its own random position.
@@ -42,23 +43,6 @@ class RandomSampler final : public PixelSampler {
   Sample2 sample(int px, int py, int index) const override;
   /// "random".
   std::string_view name() const override { return "random"; }
-};
-
-/// Jittered (stratified) sampling: an n x n grid of strata, one uniform random sample in each.
-/// Sample `index` lies in column index % n, row index / n. The positions are those of the
-/// renderer's original JitteredSampler for square counts (same hash, same PCG32 draws), except
-/// that one sample per pixel is jittered over the whole pixel instead of put at its centre.
-class JitteredGridSampler final : public PixelSampler {
- public:
-  /// `n` strata along each axis (n >= 1; spp = n * n).
-  JitteredGridSampler(int n, std::uint64_t seed);
-  /// A uniform position inside stratum (index % n, index / n).
-  Sample2 sample(int px, int py, int index) const override;
-  /// "jittered".
-  std::string_view name() const override { return "jittered"; }
-
- private:
-  int m_n;
 };
 
 }  // namespace raylab

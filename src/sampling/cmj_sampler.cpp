@@ -4,14 +4,12 @@
 #include <utility>
 
 #include "raylab/core/rng.h"
+#include "raylab/sampling/seed_salts.h"
 #include "raylab/sampling/stratum.h"
 
 namespace raylab {
 
 namespace {
-
-/// Keeps the cmj sampler's hashes apart from the other samplers' for the same seed.
-constexpr std::uint64_t kCmjSalt = 0x3c6ef372fe94f82bull;
 
 /// Feistel rounds of the permutations: must be even (see keyed_bijection). Eight rather than
 /// the textbook four, because the domains here are tiny (a few bits), where four rounds leave a
@@ -77,7 +75,7 @@ CmjSampler::CmjSampler(int spp, std::uint64_t seed) : PixelSampler(spp, seed) {
 Sample2 CmjSampler::sample(int px, int py, int index) const {
   const int n = spp();
   const std::uint64_t pixel_key =
-      hash_seed(seed() ^ kCmjSalt, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py));
+      hash_seed(seed() ^ kCmjSamplerSalt, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py));
   // Which cell sample `index` goes to is shuffled too, so that a prefix of the indices is not
   // confined to the bottom rows.
   const int cell = permute(index, n, sub_key(pixel_key, 1));

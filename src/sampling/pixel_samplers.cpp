@@ -6,9 +6,11 @@
 
 #include "basic_samplers.h"
 #include "cmj_sampler.h"
+#include "jittered_sampler.h"
 #include "raylab/core/error.h"
 #include "raylab/core/rng.h"
 #include "raylab/sampling/pixel_sampler.h"
+#include "raylab/sampling/seed_salts.h"
 #include "sobol_sampler.h"
 
 namespace raylab {
@@ -110,7 +112,7 @@ std::unique_ptr<PixelSampler> make_pixel_sampler(std::string_view name, int spp,
 std::uint64_t sample_path_seed(std::uint64_t seed, int px, int py, int index) {
   // The formula of the original JitteredSampler::path_seed, so that area-light samples (and the
   // reference images made with them) stay the same.
-  return hash_seed(seed ^ 0x5eedf00dull, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py),
+  return hash_seed(seed ^ kSamplePathSalt, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py),
                    static_cast<std::uint64_t>(index));
 }
 

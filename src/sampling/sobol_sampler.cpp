@@ -1,14 +1,12 @@
 #include "sobol_sampler.h"
 
 #include "raylab/core/rng.h"
+#include "raylab/sampling/seed_salts.h"
 #include "raylab/sampling/stratum.h"
 
 namespace raylab {
 
 namespace {
-
-/// Keeps the Sobol' sampler's hashes apart from the other samplers' for the same seed.
-constexpr std::uint64_t kSobolSalt = 0xa54ff53a5f1d36f1ull;
 
 /// Mirrors the 32 bits of `v`: bit 0 becomes bit 31.
 constexpr std::uint32_t reverse_bits(std::uint32_t v) {
@@ -51,7 +49,7 @@ std::uint32_t owen_scramble(std::uint32_t bits, std::uint64_t key) {
 
 Sample2 SobolSampler::sample(int px, int py, int index) const {
   const std::uint64_t pixel_key =
-      hash_seed(seed() ^ kSobolSalt, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py));
+      hash_seed(seed() ^ kSobolSamplerSalt, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py));
   const auto i = static_cast<std::uint32_t>(index);
   // One independent scramble per dimension: scrambling both with one key would tie them.
   const std::uint32_t x = owen_scramble(sobol_bits(i, 0), mix64(pixel_key));
