@@ -60,6 +60,64 @@ struct Frame {
   int child;                  // the child being visited, in the mirrored numbering
 };
 
+// Where the ray crosses the tree's lattice planes. Usually step * k + b, an affine function of
+// the step that is monotonic like the planes themselves, so children never overlap or leave
+// gaps along the ray; its rounding (a few ulps of the root's size and of the origin's distance)
+// is what the build's margin covers. A zero or tiny direction component makes k or b infinite
+// and that form inf - inf, so such rays compute (plane - origin) / direction instead, where
+// 0 * inf (the origin in a plane it runs parallel to) picks a side: `if_on_plane`.
+class LatticeCrossings {
+ public:
+  LatticeCrossings(const OctreeTree& tree, Vec3 origin, Vec3 inv) : m_tree(tree), m_origin(origin), m_inv(inv) {
+    for (int i = 0; i < 3; ++i) {
+      m_k[i] = tree.root_size * 0x1p-24f * inv[i];
+      m_b[i] = (tree.root_lo[i] - origin[i]) * inv[i];
+      m_affine = m_affine && std::isfinite(m_k[i]) && std::isfinite(m_b[i]);
+    }
+  }
+
+  // The crossing of lattice plane `step` along axis i.
+  float at(int i, float step, float if_on_plane) const {
+    if (m_affine) return step * m_k[i] + m_b[i];
+    const float t = (m_tree.plane(i, static_cast<std::uint32_t>(step)) - m_origin[i]) * m_inv[i];
+    return std::isnan(t) ? if_on_plane : t;
+  }
+
+ private:
+  const OctreeTree& m_tree;
+  Vec3 m_origin, m_inv;
+  float m_k[3], m_b[3];
+  bool m_affine = true;
+};
+
+// Completes frame `g` for interior node `node` of edge `size` (its far crossings and lattice
+// corner are set): the middle crossings, and the child holding the ray at t_cur. A ray in a
+// centre plane and parallel to it may take either half (the margin put what lies on the plane in
+// both); it takes the lower one of the mirrored frame.
+inline void open_frame(Frame& g, const OctreeNode& node, float size, const LatticeCrossings& crossing, float t_cur) {
+  g.first_child = node.first;
+  g.half = 0.5f * size;
+  for (int i = 0; i < 3; ++i) g.tm[i] = crossing.at(i, g.lo[i] + g.half, kInf);
+  g.child = (g.tm[0] <= t_cur ? 1 : 0) | (g.tm[1] <= t_cur ? 2 : 0) | (g.tm[2] <= t_cur ? 4 : 0);
+}
+
+// Edge of the root in lattice steps.
+constexpr float kRootLatticeSteps = static_cast<float>(kOctreeLatticeSteps);
+
+// Sets the root's frame `root` (far crossings, lattice corner) for a ray of direction octant
+// `octant`; returns where the ray enters the root. An origin in a face plane counts as inside
+// (the root is larger than the primitives, so nothing can be lost either way).
+inline float enter_root(Frame& root, const LatticeCrossings& crossing, int octant) {
+  float t_enter = -kInf;
+  for (int i = 0; i < 3; ++i) {
+    const bool mirrored = (octant >> i) & 1;
+    t_enter = std::fmax(t_enter, crossing.at(i, mirrored ? kRootLatticeSteps : 0.f, -kInf));
+    root.t1[i] = crossing.at(i, mirrored ? 0.f : kRootLatticeSteps, kInf);
+    root.lo[i] = 0.f;
+  }
+  return t_enter;
+}
+
 // The ray's mailbox stamp, or none when mailboxing is off (then every reference is tested). The
 // stamp is taken only when the ray enters the tree: rays that miss never touch the mailboxes.
 struct OptionalMailbox {
@@ -114,37 +172,11 @@ bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
     return kAnyHit;
   };
 
-  // Crossing of lattice plane `step` along axis i. Usually step * k + b, an affine function of
-  // the step that is monotonic like the planes themselves, so children never overlap or leave
-  // gaps along the ray; its rounding (a few ulps of the root's size and of the origin's distance)
-  // is what the build's margin covers. A zero or tiny direction component makes k or b infinite
-  // and that form inf - inf, so such rays compute (plane - origin) / direction instead, where
-  // 0 * inf (the origin in a plane it runs parallel to) picks a side: `if_on_plane`.
-  float k[3], b[3];
-  bool affine = true;
-  for (int i = 0; i < 3; ++i) {
-    k[i] = m_tree.root_size * 0x1p-24f * inv[i];
-    b[i] = (m_tree.root_lo[i] - o[i]) * inv[i];
-    affine = affine && std::isfinite(k[i]) && std::isfinite(b[i]);
-  }
-  auto crossing = [&](int i, float step, float if_on_plane) {
-    if (affine) return step * k[i] + b[i];
-    const float t = (m_tree.plane(i, static_cast<std::uint32_t>(step)) - o[i]) * inv[i];
-    return std::isnan(t) ? if_on_plane : t;
-  };
+  const LatticeCrossings crossing(m_tree, o, inv);
 
-  // The root: an origin in a face plane counts as inside (the root is larger than the
-  // primitives, so nothing can be lost either way).
   Frame stack[kOctreeDepthLimit];
   Frame* f = stack;
-  constexpr float kRootSteps = static_cast<float>(kOctreeLatticeSteps);
-  float t_enter = -kInf;
-  for (int i = 0; i < 3; ++i) {
-    const bool mirrored = (octant >> i) & 1;
-    t_enter = std::fmax(t_enter, crossing(i, mirrored ? kRootSteps : 0.f, -kInf));
-    f->t1[i] = crossing(i, mirrored ? 0.f : kRootSteps, kInf);
-    f->lo[i] = 0.f;
-  }
+  const float t_enter = enter_root(*f, crossing, octant);
   const float t_leave = min3(f->t1[0], f->t1[1], f->t1[2]);
   const float limit = visit_limit(tmax);
   // Where the ray is now: it enters each cell at the parameter it left the previous one.
@@ -159,17 +191,7 @@ bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
     return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
   }
 
-  // Completes frame `g` for interior node `node` (its far crossings and lattice corner are set):
-  // the middle crossings, and the child holding the ray at t_cur. A ray in a centre plane and
-  // parallel to it may take either half (the margin put what lies on the plane in both); it
-  // takes the lower one of the mirrored frame.
-  auto open = [&](Frame& g, const OctreeNode& node, float size) {
-    g.first_child = node.first;
-    g.half = 0.5f * size;
-    for (int i = 0; i < 3; ++i) g.tm[i] = crossing(i, g.lo[i] + g.half, kInf);
-    g.child = (g.tm[0] <= t_cur ? 1 : 0) | (g.tm[1] <= t_cur ? 2 : 0) | (g.tm[2] <= t_cur ? 4 : 0);
-  };
-  open(*f, nodes[0], kRootSteps);
+  open_frame(*f, nodes[0], kRootLatticeSteps, crossing, t_cur);
 
   for (;;) {
     // Visit the current child of the innermost open node.
@@ -182,7 +204,7 @@ bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
         g.t1[i] = ((f->child >> i) & 1) ? f->t1[i] : f->tm[i];
         g.lo[i] = f->lo[i] + (((actual >> i) & 1) ? f->half : 0.f);
       }
-      open(g, node, f->half);
+      open_frame(g, node, f->half, crossing, t_cur);
       ++f;
       continue;
     }
