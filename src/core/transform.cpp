@@ -5,21 +5,9 @@
 
 namespace raylab {
 
-Transform Transform::translate(double x, double y, double z) {
-  Transform t;
-  t.m[0][3] = x;
-  t.m[1][3] = y;
-  t.m[2][3] = z;
-  return t;
-}
+Transform Transform::translate(double x, double y, double z) { return {{{{1, 0, 0, x}, {0, 1, 0, y}, {0, 0, 1, z}}}}; }
 
-Transform Transform::scale(double x, double y, double z) {
-  Transform t;
-  t.m[0][0] = x;
-  t.m[1][1] = y;
-  t.m[2][2] = z;
-  return t;
-}
+Transform Transform::scale(double x, double y, double z) { return {{{{x, 0, 0, 0}, {0, y, 0, 0}, {0, 0, z, 0}}}}; }
 
 Transform Transform::rotate(double degrees, Vec3 axis) {
   const double len = std::sqrt(double(axis.x) * axis.x + double(axis.y) * axis.y + double(axis.z) * axis.z);

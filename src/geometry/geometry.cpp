@@ -8,6 +8,14 @@ namespace {
 // Texture coordinates of a triangle that has none of its own.
 constexpr std::array<Vec2, 3> kBarycentricUvs{Vec2{0.f, 0.f}, Vec2{1.f, 0.f}, Vec2{0.f, 1.f}};
 
+// Appends primitive `shape` of object `object`: a kind's primitives and their objects are
+// parallel arrays, and grow together.
+template <class Shape>
+void append(std::vector<Shape>& shapes, std::vector<std::uint32_t>& objects, const Shape& shape, std::uint32_t object) {
+  shapes.push_back(shape);
+  objects.push_back(object);
+}
+
 }  // namespace
 
 std::uint32_t Geometry::add(const Triangle& t, std::uint32_t object) { return add(t, nullptr, nullptr, object); }
@@ -35,25 +43,13 @@ std::uint32_t Geometry::add(const Triangle& t, const std::array<Vec3, 3>* normal
   return static_cast<std::uint32_t>(triangles.size() - 1);
 }
 
-void Geometry::add(const Sphere& s, std::uint32_t object) {
-  spheres.push_back(s);
-  sphere_objects.push_back(object);
-}
+void Geometry::add(const Sphere& s, std::uint32_t object) { append(spheres, sphere_objects, s, object); }
 
-void Geometry::add(const Cylinder& c, std::uint32_t object) {
-  cylinders.push_back(c);
-  cylinder_objects.push_back(object);
-}
+void Geometry::add(const Cylinder& c, std::uint32_t object) { append(cylinders, cylinder_objects, c, object); }
 
-void Geometry::add(const Disk& d, std::uint32_t object) {
-  disks.push_back(d);
-  disk_objects.push_back(object);
-}
+void Geometry::add(const Disk& d, std::uint32_t object) { append(disks, disk_objects, d, object); }
 
-void Geometry::add(const Quad& q, std::uint32_t object) {
-  quads.push_back(q);
-  quad_objects.push_back(object);
-}
+void Geometry::add(const Quad& q, std::uint32_t object) { append(quads, quad_objects, q, object); }
 
 std::vector<std::uint32_t> Geometry::primitive_ids() const {
   std::vector<std::uint32_t> ids(size());
@@ -159,10 +155,7 @@ bool Geometry::intersect(std::uint32_t prim_id, const WatertightRay& wr, Ray& ra
   }
   if (!found) return false;
   ray.tmax = t;
-  hit.t = t;
-  hit.prim_id = prim_id;
-  hit.u = u;
-  hit.v = v;
+  hit = Hit{t, prim_id, u, v};
   return true;
 }
 

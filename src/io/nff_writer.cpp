@@ -58,14 +58,29 @@ class NffWriter {
     m_out.append(buf.data(), result.ptr);
   }
 
-  // " x y z"
-  void vec3(Vec3 v) {
+  // One field of an entity line, after the space that separates it from what comes before.
+  void field(float v) {
     m_out += ' ';
-    number(v.x);
+    number(v);
+  }
+  void field(int v) {
     m_out += ' ';
-    number(v.y);
-    m_out += ' ';
-    number(v.z);
+    integer(v);
+  }
+  void field(Vec3 v) {
+    field(v.x);
+    field(v.y);
+    field(v.z);
+  }
+
+  // A line of the file: `head` (an entity's name, or nothing for the vertex lines that follow
+  // one), then each of `fields` after a space. Every NFF line is written through here, so that
+  // the separators are decided once.
+  template <class... Fields>
+  void line(std::string_view head, const Fields&... fields) {
+    m_out += head;
+    (field(fields), ...);
+    m_out += '\n';
   }
 
   // A comment line; the text may come from a scene file, so line breaks are taken out.
@@ -89,21 +104,13 @@ class NffWriter {
       comment("angle converted from an edge-to-edge vertical field of view of " + std::to_string(cam.vfov_degrees) +
               " degrees");
     }
-    m_out += "v\nfrom";
-    vec3(cam.from);
-    m_out += "\nat";
-    vec3(cam.at);
-    m_out += "\nup";
-    vec3(cam.up);
-    m_out += "\nangle ";
-    number(angle);
-    m_out += "\nhither ";
-    number(cam.hither);
-    m_out += "\nresolution ";
-    integer(m_scene.settings.width);
-    m_out += ' ';
-    integer(height);
-    m_out += '\n';
+    line("v");
+    line("from", cam.from);
+    line("at", cam.at);
+    line("up", cam.up);
+    line("angle", angle);
+    line("hither", cam.hither);
+    line("resolution", m_scene.settings.width, height);
   }
 
   void background() {
@@ -112,9 +119,7 @@ class NffWriter {
     if (s.ambient.x != 0.f || s.ambient.y != 0.f || s.ambient.z != 0.f) {
       comment("the scene has an ambient term; NFF has none");
     }
-    m_out += 'b';
-    vec3(s.background);
-    m_out += '\n';
+    line("b", s.background);
   }
 
   void light(const Light& l) {
@@ -135,10 +140,7 @@ class NffWriter {
         break;
     }
     if (l.falloff) comment("the next light falls off with distance; NFF lights do not");
-    m_out += 'l';
-    vec3(position);
-    vec3(l.intensity);
-    m_out += '\n';
+    line("l", position, l.intensity);
   }
 
   // Where a point light stands in for a directional one: far back along the light's direction
@@ -163,20 +165,8 @@ class NffWriter {
     if (m.texture.kind != Texture::Kind::kNone) {
       comment("material '" + m.name + "' has a texture; NFF keeps its base colour");
     }
-    m_out += 'f';
-    vec3(m.color);
-    m_out += ' ';
-    number(m.kd);
-    m_out += ' ';
     // NFF's Ks weights both the highlight and the mirror ray.
-    number(std::max(m.ks, m.reflectivity));
-    m_out += ' ';
-    number(m.shininess);
-    m_out += ' ';
-    number(m.transmittance);
-    m_out += ' ';
-    number(m.ior);
-    m_out += '\n';
+    line("f", m.color, m.kd, std::max(m.ks, m.reflectivity), m.shininess, m.transmittance, m.ior);
   }
 
   // Indices 0..n-1 ordered by object id, keeping file order within an object. Loaders add
@@ -242,23 +232,13 @@ class NffWriter {
         triangle(i);
         break;
       case 1:
-        m_out += 's';
-        vec3(g.spheres[i].center);
-        m_out += ' ';
-        number(g.spheres[i].radius);
-        m_out += '\n';
+        line("s", g.spheres[i].center, g.spheres[i].radius);
         break;
       case 2: {
         const Cylinder& c = g.cylinders[i];
-        m_out += "c\n";
-        vec3(c.base);
-        m_out += ' ';
-        number(c.base_radius);
-        m_out += '\n';
-        vec3(c.apex);
-        m_out += ' ';
-        number(c.apex_radius);
-        m_out += '\n';
+        line("c");
+        line("", c.base, c.base_radius);
+        line("", c.apex, c.apex_radius);
         break;
       }
       case 3:
@@ -268,11 +248,8 @@ class NffWriter {
         const Quad& q = g.quads[i];
         const std::array<Vec3, 4> corners{q.corner, q.corner + q.edge_u, q.corner + q.edge_u + q.edge_v,
                                           q.corner + q.edge_v};
-        m_out += "p 4\n";
-        for (const Vec3& p : corners) {
-          vec3(p);
-          m_out += '\n';
-        }
+        line("p", 4);
+        for (const Vec3& p : corners) line("", p);
         break;
       }
     }
@@ -289,11 +266,13 @@ class NffWriter {
       const Vec3 zero{0.f, 0.f, 0.f};
       if (!(n[0] == zero && n[1] == zero && n[2] == zero)) normals = &n;
     }
-    m_out += normals != nullptr ? "pp 3\n" : "p 3\n";
+    line(normals != nullptr ? "pp" : "p", 3);
     for (std::size_t k = 0; k < 3; ++k) {
-      vec3(corners[k]);
-      if (normals != nullptr) vec3((*normals)[k]);
-      m_out += '\n';
+      if (normals != nullptr) {
+        line("", corners[k], (*normals)[k]);
+      } else {
+        line("", corners[k]);
+      }
     }
   }
 
@@ -304,15 +283,12 @@ class NffWriter {
     const Vec3 helper = std::abs(n.x) > 0.9f ? Vec3{0.f, 1.f, 0.f} : Vec3{1.f, 0.f, 0.f};
     const Vec3 u = normalize(cross(n, helper));
     const Vec3 v = cross(n, u);
-    m_out += "p ";
-    integer(kDiskSides);
-    m_out += '\n';
+    line("p", kDiskSides);
     for (int k = 0; k < kDiskSides; ++k) {
       const double a = 2.0 * std::numbers::pi * k / kDiskSides;
       const float c = static_cast<float>(std::cos(a)) * d.radius;
       const float s = static_cast<float>(std::sin(a)) * d.radius;
-      vec3(d.center + u * c + v * s);
-      m_out += '\n';
+      line("", d.center + u * c + v * s);
     }
   }
 

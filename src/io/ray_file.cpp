@@ -31,6 +31,25 @@ void check_size(std::size_t size, std::size_t record, const char* kind, const st
                              std::to_string(record) + " bytes): truncated or not a " + kind + " file");
 }
 
+// The bytes of `records`, each written by `put(record, out)` into its `record_bytes` at `out`.
+template <class Record, class Put>
+std::vector<unsigned char> encode_records(std::span<const Record> records, std::size_t record_bytes, Put put) {
+  std::vector<unsigned char> bytes(records.size() * record_bytes);
+  for (std::size_t i = 0; i < records.size(); ++i) put(records[i], bytes.data() + i * record_bytes);
+  return bytes;
+}
+
+// The records of a `kind` file, each read by `get(in)` from its `record_bytes` at `in`; throws
+// unless the size is a whole number of records.
+template <class Record, class Get>
+std::vector<Record> decode_records(std::span<const unsigned char> bytes, std::size_t record_bytes, const char* kind,
+                                   const std::string& file, Get get) {
+  check_size(bytes.size(), record_bytes, kind, file);
+  std::vector<Record> records(bytes.size() / record_bytes);
+  for (std::size_t i = 0; i < records.size(); ++i) records[i] = get(bytes.data() + i * record_bytes);
+  return records;
+}
+
 std::span<const unsigned char> as_bytes(const std::string& s) {
   return {reinterpret_cast<const unsigned char*>(s.data()), s.size()};
 }
@@ -43,52 +62,32 @@ HitRecord hit_record(const Hit& hit) {
 }
 
 std::vector<unsigned char> encode_rays(std::span<const Ray> rays) {
-  std::vector<unsigned char> bytes(rays.size() * kRayRecordBytes);
-  unsigned char* out = bytes.data();
-  for (const Ray& r : rays) {
+  return encode_records(rays, kRayRecordBytes, [](const Ray& r, unsigned char* out) {
     const float f[8] = {r.origin.x,    r.origin.y,    r.origin.z,    r.tmin,
                         r.direction.x, r.direction.y, r.direction.z, r.tmax};
-    for (int k = 0; k < 8; ++k, out += 4) put_float(out, f[k]);
-  }
-  return bytes;
+    for (int k = 0; k < 8; ++k) put_float(out + 4 * k, f[k]);
+  });
 }
 
 std::vector<Ray> decode_rays(std::span<const unsigned char> bytes, const std::string& file) {
-  check_size(bytes.size(), kRayRecordBytes, ".rays", file);
-  std::vector<Ray> rays(bytes.size() / kRayRecordBytes);
-  const unsigned char* in = bytes.data();
-  for (Ray& r : rays) {
+  return decode_records<Ray>(bytes, kRayRecordBytes, ".rays", file, [](const unsigned char* in) {
     float f[8];
-    for (int k = 0; k < 8; ++k, in += 4) f[k] = get_float(in);
-    r.origin = {f[0], f[1], f[2]};
-    r.tmin = f[3];
-    r.direction = {f[4], f[5], f[6]};
-    r.tmax = f[7];
-  }
-  return rays;
+    for (int k = 0; k < 8; ++k) f[k] = get_float(in + 4 * k);
+    return Ray{{f[0], f[1], f[2]}, f[3], {f[4], f[5], f[6]}, f[7]};
+  });
 }
 
 std::vector<unsigned char> encode_hits(std::span<const HitRecord> hits) {
-  std::vector<unsigned char> bytes(hits.size() * kHitRecordBytes);
-  unsigned char* out = bytes.data();
-  for (const HitRecord& h : hits) {
+  return encode_records(hits, kHitRecordBytes, [](const HitRecord& h, unsigned char* out) {
     put_float(out, h.t);
     put_word(out + 4, h.prim_id);
-    out += kHitRecordBytes;
-  }
-  return bytes;
+  });
 }
 
 std::vector<HitRecord> decode_hits(std::span<const unsigned char> bytes, const std::string& file) {
-  check_size(bytes.size(), kHitRecordBytes, ".hits", file);
-  std::vector<HitRecord> hits(bytes.size() / kHitRecordBytes);
-  const unsigned char* in = bytes.data();
-  for (HitRecord& h : hits) {
-    h.t = get_float(in);
-    h.prim_id = get_word(in + 4);
-    in += kHitRecordBytes;
-  }
-  return hits;
+  return decode_records<HitRecord>(bytes, kHitRecordBytes, ".hits", file, [](const unsigned char* in) {
+    return HitRecord{get_float(in), get_word(in + 4)};
+  });
 }
 
 std::vector<Ray> read_rays(const std::string& path) { return decode_rays(as_bytes(read_file(path)), path); }

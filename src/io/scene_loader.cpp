@@ -37,14 +37,12 @@ void fit_camera_and_lights(Scene& scene) {
   cam.from = center + view_dir * distance;
   cam.up = {0.f, 1.f, 0.f};
 
-  Light key;
-  key.kind = Light::Kind::kPoint;
-  key.position = center + normalize(Vec3{1.f, 1.5f, 1.2f}) * (distance * 1.5f);
-  key.intensity = {0.8f, 0.8f, 0.8f};
-  Light fill;
-  fill.kind = Light::Kind::kDirectional;
-  fill.direction = normalize(Vec3{0.6f, -0.2f, -1.f});
-  fill.intensity = {0.25f, 0.25f, 0.28f};
+  const Light key{.kind = Light::Kind::kPoint,
+                  .position = center + normalize(Vec3{1.f, 1.5f, 1.2f}) * (distance * 1.5f),
+                  .intensity = {0.8f, 0.8f, 0.8f}};
+  const Light fill{.kind = Light::Kind::kDirectional,
+                   .direction = normalize(Vec3{0.6f, -0.2f, -1.f}),
+                   .intensity = {0.25f, 0.25f, 0.28f}};
   scene.lights = {key, fill};
   scene.settings.background = {0.08f, 0.09f, 0.11f};
 }
@@ -57,13 +55,7 @@ std::span<const std::string_view> scene_file_extensions() {
 namespace {
 
 Material default_mesh_material() {
-  Material grey;
-  grey.name = "grey";
-  grey.color = {0.75f, 0.75f, 0.75f};
-  grey.kd = 0.9f;
-  grey.ks = 0.2f;
-  grey.shininess = 40.f;
-  return grey;
+  return {.name = "grey", .color = {0.75f, 0.75f, 0.75f}, .kd = 0.9f, .ks = 0.2f, .shininess = 40.f};
 }
 
 void note_dropped(Scene& scene, const std::string& path, const MeshLoadReport& report) {

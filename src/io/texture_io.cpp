@@ -13,6 +13,7 @@
 #include <climits>
 #include <cstring>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "raylab/core/error.h"
@@ -131,37 +132,22 @@ const std::array<float, 256>& srgb8_to_linear_table() {
   return table;
 }
 
-std::vector<Color> decode_8bit(std::span<const unsigned char> bytes, ImageSize size, const std::string& file,
-                               const std::string& element) {
+// Decodes `bytes` to RGB with `load` (stb_image's 8-bit or 16-bit decoder, whose samples the
+// image keeps) and maps each sample to linear with `to_linear`. The decoded size must be the one
+// the header promised, on which the size limits were checked.
+template <class Load, class ToLinear>
+std::vector<Color> decode_rgb(std::span<const unsigned char> bytes, ImageSize size, const std::string& file,
+                              const std::string& element, Load load, ToLinear to_linear) {
   int width = 0, height = 0, channels = 0;
-  stbi_uc* data = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height, &channels, 3);
+  auto* data = load(bytes.data(), static_cast<int>(bytes.size()), &width, &height, &channels, 3);
   if (data == nullptr) fail(file, element, "cannot decode image: " + failure_reason());
-  std::unique_ptr<stbi_uc, void (*)(void*)> owner(data, stbi_image_free);
-  if (static_cast<std::uint64_t>(width) != size.width || static_cast<std::uint64_t>(height) != size.height) {
-    fail(file, element, "image size changed between header and decoding");
-  }
-  const auto& table = srgb8_to_linear_table();
-  std::vector<Color> texels(size.width * size.height);
-  for (std::size_t i = 0; i < texels.size(); ++i) {
-    texels[i] = {table[data[3 * i]], table[data[3 * i + 1]], table[data[3 * i + 2]]};
-  }
-  return texels;
-}
-
-// 16-bit PNGs keep their precision: decoding them to 8 bits first would band smooth gradients.
-std::vector<Color> decode_16bit(std::span<const unsigned char> bytes, ImageSize size, const std::string& file,
-                                const std::string& element) {
-  int width = 0, height = 0, channels = 0;
-  stbi_us* data = stbi_load_16_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height, &channels, 3);
-  if (data == nullptr) fail(file, element, "cannot decode image: " + failure_reason());
-  std::unique_ptr<stbi_us, void (*)(void*)> owner(data, stbi_image_free);
+  std::unique_ptr<std::remove_pointer_t<decltype(data)>, void (*)(void*)> owner(data, stbi_image_free);
   if (static_cast<std::uint64_t>(width) != size.width || static_cast<std::uint64_t>(height) != size.height) {
     fail(file, element, "image size changed between header and decoding");
   }
   std::vector<Color> texels(size.width * size.height);
-  auto linear = [](stbi_us v) { return srgb_to_linear(static_cast<float>(v) / 65535.f); };
   for (std::size_t i = 0; i < texels.size(); ++i) {
-    texels[i] = {linear(data[3 * i]), linear(data[3 * i + 1]), linear(data[3 * i + 2])};
+    texels[i] = {to_linear(data[3 * i]), to_linear(data[3 * i + 1]), to_linear(data[3 * i + 2])};
   }
   return texels;
 }
@@ -176,8 +162,12 @@ std::shared_ptr<const TextureImage> decode_texture(std::span<const unsigned char
   const ImageSize size = checked_header_size(bytes, *format, file, element);
   const bool sixteen_bit =
       *format == ImageFormat::kPng && stbi_is_16_bit_from_memory(bytes.data(), static_cast<int>(bytes.size())) != 0;
+  // 16-bit PNGs keep their precision: decoding them to 8 bits first would band smooth gradients.
   std::vector<Color> texels =
-      sixteen_bit ? decode_16bit(bytes, size, file, element) : decode_8bit(bytes, size, file, element);
+      sixteen_bit ? decode_rgb(bytes, size, file, element, stbi_load_16_from_memory,
+                               [](stbi_us v) { return srgb_to_linear(static_cast<float>(v) / 65535.f); })
+                  : decode_rgb(bytes, size, file, element, stbi_load_from_memory,
+                               [&table = srgb8_to_linear_table()](stbi_uc v) { return table[v]; });
   return std::make_shared<const TextureImage>(static_cast<int>(size.width), static_cast<int>(size.height),
                                               std::move(texels));
 }

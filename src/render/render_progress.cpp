@@ -85,13 +85,8 @@ RenderProgress start_progress(int width, int height, int tile_size, int spp, int
                      std::to_string(spp) + ")");
   }
   if (margin < 0) throw UsageError("the filter margin must not be negative");
-  RenderProgress p;
-  p.width = width;
-  p.height = height;
-  p.tile_size = tile_size;
-  p.spp = spp;
-  p.passes = passes;
-  p.margin = margin;
+  RenderProgress p{
+      .width = width, .height = height, .tile_size = tile_size, .spp = spp, .passes = passes, .margin = margin};
   const int count = detail::TileGrid(width, height, tile_size).count();
   p.tile_done.assign(static_cast<std::size_t>(count), 0);
   p.tiles.reserve(static_cast<std::size_t>(count));

@@ -10,27 +10,23 @@ namespace {
 
 SpdPublishedRow readme_row(std::string_view scene, int size, std::uint64_t eye_hits, std::uint64_t reflection,
                            std::uint64_t refraction, std::uint64_t shadow) {
-  SpdPublishedRow row;
-  row.scene = scene;
-  row.size = size;
-  row.eye_hits = eye_hits;
-  row.reflection = reflection;
-  row.refraction = refraction;
-  row.shadow = shadow;
-  return row;
+  return {.scene = scene,
+          .size = size,
+          .eye_hits = eye_hits,
+          .reflection = reflection,
+          .refraction = refraction,
+          .shadow = shadow};
 }
 
 SpdPublishedRow havran_row(std::string_view scene, int size, std::uint64_t eye_hits, std::uint64_t shadow,
                            std::uint64_t shadow_hits, std::uint64_t secondary, std::uint64_t secondary_hits) {
-  SpdPublishedRow row;
-  row.scene = scene;
-  row.size = size;
-  row.eye_hits = eye_hits;
-  row.shadow = shadow;
-  row.shadow_hits = shadow_hits;
-  row.secondary = secondary;
-  row.secondary_hits = secondary_hits;
-  return row;
+  return {.scene = scene,
+          .size = size,
+          .eye_hits = eye_hits,
+          .secondary = secondary,
+          .secondary_hits = secondary_hits,
+          .shadow = shadow,
+          .shadow_hits = shadow_hits};
 }
 
 // Readme.txt, "eye hit rays" to "shadow rays". The sizes are those whose scenes have the

@@ -9,10 +9,7 @@
 namespace raylab {
 
 Scene make_aa_checker_scene() {
-  Scene scene;
-  aa_detail::set_chart_settings(scene, 1);
-  aa_detail::make_unlit(scene);
-  scene.settings.background = kAaCheckerSky;
+  Scene scene = aa_detail::unlit_chart(kAaCheckerSky);
 
   // A disk rather than a huge quad: its texture coordinates are measured from its centre, right
   // under the eye, so the near cells (the ones wide enough to judge) keep full float precision.

@@ -12,9 +12,10 @@ namespace raylab::aa_detail {
 /// `max_depth`; the sampler and filter keep their defaults.
 void set_chart_settings(Scene& scene, int max_depth);
 
-/// Makes `scene` unlit: no lights, ambient (1, 1, 1) and ray depth 1, so that a surface of
-/// kd = 1 shows exactly its diffuse colour.
-void make_unlit(Scene& scene);
+/// An empty unlit chart: the charts' settings, no lights, ambient (1, 1, 1) and ray depth 1, so
+/// that a surface of kd = 1 shows exactly its diffuse colour, and `background` where no surface
+/// is hit.
+Scene unlit_chart(Color background);
 
 /// Adds an unlit material (kd 1, nothing else) of colour `color`; returns its index.
 std::uint32_t add_unlit_material(Scene& scene, std::string name, Color color);

@@ -36,10 +36,7 @@ void add_shapes(Scene& scene, std::uint32_t object, float shift_x) {
 }  // namespace
 
 Scene make_aa_edges_scene() {
-  Scene scene;
-  aa_detail::set_chart_settings(scene, 1);
-  aa_detail::make_unlit(scene);
-  scene.settings.background = {0.f, 0.f, 0.f};
+  Scene scene = aa_detail::unlit_chart({0.f, 0.f, 0.f});
   const float half = 0.5f * kAaWidth;
 
   const std::uint32_t white = aa_detail::add_unlit_material(scene, "white", {1.f, 1.f, 1.f});

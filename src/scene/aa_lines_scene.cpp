@@ -58,10 +58,7 @@ void add_star(Scene& scene, std::uint32_t object) {
 }  // namespace
 
 Scene make_aa_lines_scene() {
-  Scene scene;
-  aa_detail::set_chart_settings(scene, 1);
-  aa_detail::make_unlit(scene);
-  scene.settings.background = {0.f, 0.f, 0.f};
+  Scene scene = aa_detail::unlit_chart({0.f, 0.f, 0.f});
   const std::uint32_t white = aa_detail::add_unlit_material(scene, "white", {1.f, 1.f, 1.f});
   add_lines(scene, scene.add_object("thin lines", white));
   add_star(scene, scene.add_object("siemens star", white));

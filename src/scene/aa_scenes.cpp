@@ -37,10 +37,12 @@ void set_chart_settings(Scene& scene, int max_depth) {
   scene.camera_from_file = true;
 }
 
-void make_unlit(Scene& scene) {
-  scene.lights.clear();
+Scene unlit_chart(Color background) {
+  Scene scene;
+  set_chart_settings(scene, 1);
   scene.settings.ambient = {1.f, 1.f, 1.f};
-  scene.settings.max_depth = 1;
+  scene.settings.background = background;
+  return scene;
 }
 
 std::uint32_t add_unlit_material(Scene& scene, std::string name, Color color) {

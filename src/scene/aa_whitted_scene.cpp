@@ -4,15 +4,14 @@
 
 #include "aa_common.h"
 #include "raylab/scene/aa_scenes.h"
+#include "whitted_look.h"
 
 namespace raylab {
 
 Scene make_aa_whitted_scene() {
   Scene scene;
   aa_detail::set_chart_settings(scene, 5);
-  scene.settings.sky_gradient = true;
-  scene.settings.background = {0.22f, 0.42f, 0.78f};  // zenith
-  scene.settings.horizon = {0.78f, 0.86f, 0.95f};
+  whitted_detail::set_whitted_sky(scene.settings);
   scene.settings.ambient = {0.1f, 0.1f, 0.1f};
 
   // 26 degrees down, 58 degree field: the horizon is at row 30, the floor's far edge at row
@@ -22,45 +21,24 @@ Scene make_aa_whitted_scene() {
   scene.camera.up = {0.f, 1.f, 0.f};
   scene.camera.vfov_degrees = 58.f;
 
-  Material floor;
-  floor.name = "checker floor";
-  floor.color = {0.95f, 0.85f, 0.25f};                                              // yellow
-  floor.texture = {Texture::Kind::kChecker, {0.8f, 0.12f, 0.08f}, kAaWhittedCell};  // red
-  floor.kd = 0.85f;
+  const Material floor{.name = "checker floor",
+                       .color = {0.95f, 0.85f, 0.25f},  // yellow
+                       .kd = 0.85f,
+                       .texture = {Texture::Kind::kChecker, {0.8f, 0.12f, 0.08f}, kAaWhittedCell}};  // red
   const auto floor_obj = scene.add_object("floor", scene.add_material(floor));
   const float h = 0.5f * kAaWhittedFloorSize;
   scene.geometry.add(Quad{{-h, 0.f, h}, {kAaWhittedFloorSize, 0.f, 0.f}, {0.f, 0.f, -kAaWhittedFloorSize}}, floor_obj);
 
   // The mirror and the glass of the demo scene, with highlights a little weaker so that no
   // radiance passes about 1.5.
-  Material mirror;
-  mirror.name = "mirror";
-  mirror.color = {0.9f, 0.9f, 0.95f};
-  mirror.kd = 0.05f;
-  mirror.ks = 0.5f;
-  mirror.shininess = 400.f;
-  mirror.reflectivity = 0.88f;
-  scene.geometry.add(Sphere{{-1.6f, 1.6f, -1.f}, 1.6f}, scene.add_object("mirror sphere", scene.add_material(mirror)));
-
-  Material glass;
-  glass.name = "glass";
-  glass.color = {1.f, 1.f, 1.f};
-  glass.kd = 0.f;
-  glass.ks = 0.5f;
-  glass.shininess = 600.f;
-  glass.transmittance = 0.95f;
-  glass.ior = 1.5f;
-  scene.geometry.add(Sphere{{1.8f, 1.3f, 2.2f}, 1.3f}, scene.add_object("glass sphere", scene.add_material(glass)));
+  const auto mirror_obj = scene.add_object("mirror sphere", scene.add_material(whitted_detail::whitted_mirror(0.5f)));
+  scene.geometry.add(Sphere{{-1.6f, 1.6f, -1.f}, 1.6f}, mirror_obj);
+  const auto glass_obj = scene.add_object("glass sphere", scene.add_material(whitted_detail::whitted_glass(0.5f)));
+  scene.geometry.add(Sphere{{1.8f, 1.3f, 2.2f}, 1.3f}, glass_obj);
 
   // A key light up and to the left in front, a weaker fill from the right: two shadows.
-  Light key;
-  key.kind = Light::Kind::kPoint;
-  key.position = {-5.f, 9.f, 6.f};
-  key.intensity = {0.75f, 0.73f, 0.68f};
-  Light fill;
-  fill.kind = Light::Kind::kPoint;
-  fill.position = {7.f, 6.f, 1.f};
-  fill.intensity = {0.25f, 0.27f, 0.32f};
+  const Light key{.kind = Light::Kind::kPoint, .position = {-5.f, 9.f, 6.f}, .intensity = {0.75f, 0.73f, 0.68f}};
+  const Light fill{.kind = Light::Kind::kPoint, .position = {7.f, 6.f, 1.f}, .intensity = {0.25f, 0.27f, 0.32f}};
   scene.lights = {key, fill};
   return scene;
 }

@@ -6,10 +6,8 @@
 namespace raylab {
 
 Scene make_aa_zoneplate_scene() {
-  Scene scene;
-  aa_detail::set_chart_settings(scene, 1);
-  aa_detail::make_unlit(scene);
-  scene.settings.background = {0.5f, 0.5f, 0.5f};  // never seen: the quad covers the frame
+  // The background is never seen: the quad covers the frame.
+  Scene scene = aa_detail::unlit_chart({0.5f, 0.5f, 0.5f});
 
   // The quad reaches kMargin px past every side of the frame, so no edge of it shows. Its
   // (u, v) are world units along its edges from its corner, i.e. the world x and y of the hit

@@ -30,15 +30,15 @@ struct TileSums {
 
 /// The resumable state of a uniform-sampler render (see the file comment).
 struct RenderProgress {
-  int width = 0;                        ///< image width in pixels
-  int height = 0;                       ///< image height in pixels
-  int tile_size = 0;                    ///< side of the square tiles, numbered row-major from the top-left
-  int spp = 0;                          ///< samples per pixel when every pass is done
-  int passes = 1;                       ///< the samples are taken in this many passes over the image
-  int margin = 0;                       ///< pixels a tile's samples reach beyond it (0 with the pixel box filter)
-  int passes_done = 0;                  ///< passes finished; the pass under way is this one
-  std::vector<std::uint8_t> tile_done;  ///< per tile: 1 when it has finished the pass under way
-  std::vector<TileSums> tiles;          ///< per tile, in tile order
+  int width = 0;                          ///< image width in pixels
+  int height = 0;                         ///< image height in pixels
+  int tile_size = 0;                      ///< side of the square tiles, numbered row-major from the top-left
+  int spp = 0;                            ///< samples per pixel when every pass is done
+  int passes = 1;                         ///< the samples are taken in this many passes over the image
+  int margin = 0;                         ///< pixels a tile's samples reach beyond it (0 with the pixel box filter)
+  int passes_done = 0;                    ///< passes finished; the pass under way is this one
+  std::vector<std::uint8_t> tile_done{};  ///< per tile: 1 when it has finished the pass under way
+  std::vector<TileSums> tiles{};          ///< per tile, in tile order
 
   /// Whether every pass is done.
   bool complete() const { return passes_done >= passes; }

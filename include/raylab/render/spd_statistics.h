@@ -15,15 +15,15 @@ namespace raylab {
 
 /// One scene's row of a published table. A column the table does not give is empty.
 struct SpdPublishedRow {
-  std::string_view scene;                       ///< generator name ("balls", ...)
-  int size = 0;                                 ///< the generator size whose scene the table counted
-  std::optional<std::uint64_t> eye_hits;        ///< eye rays that hit an object
-  std::optional<std::uint64_t> reflection;      ///< reflection rays cast
-  std::optional<std::uint64_t> refraction;      ///< refraction rays cast
-  std::optional<std::uint64_t> secondary;       ///< reflection plus refraction rays cast
-  std::optional<std::uint64_t> secondary_hits;  ///< of which hit an object
-  std::optional<std::uint64_t> shadow;          ///< shadow rays cast
-  std::optional<std::uint64_t> shadow_hits;     ///< shadow rays blocked by an object
+  std::string_view scene;                         ///< generator name ("balls", ...)
+  int size = 0;                                   ///< the generator size whose scene the table counted
+  std::optional<std::uint64_t> eye_hits{};        ///< eye rays that hit an object
+  std::optional<std::uint64_t> reflection{};      ///< reflection rays cast
+  std::optional<std::uint64_t> refraction{};      ///< refraction rays cast
+  std::optional<std::uint64_t> secondary{};       ///< reflection plus refraction rays cast
+  std::optional<std::uint64_t> secondary_hits{};  ///< of which hit an object
+  std::optional<std::uint64_t> shadow{};          ///< shadow rays cast
+  std::optional<std::uint64_t> shadow_hits{};     ///< shadow rays blocked by an object
 };
 
 /// A published table of ray counts for the seven SPD scenes (eye rays through the 513 x 513

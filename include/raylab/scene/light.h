@@ -8,10 +8,11 @@ namespace raylab {
 
 /// A light. Point and spherical lights fall off with the inverse square of distance only when
 /// `falloff` is set (NFF lights do not fall off); area lights are sampled with `samples`
-/// stratified shadow rays, which gives soft shadows.
+/// stratified shadow rays, which gives soft shadows. Every member has a default, so that a
+/// designated initialiser names only what differs from it.
 struct Light {
   enum class Kind { kPoint, kDirectional, kSphere, kQuad } kind = Kind::kPoint;
-  Vec3 position;                   ///< point / sphere centre / quad corner
+  Vec3 position{};                 ///< point / sphere centre / quad corner
   Vec3 direction{0.f, -1.f, 0.f};  ///< directional: direction the light travels
   Vec3 edge_u{1.f, 0.f, 0.f};      ///< quad: first edge
   Vec3 edge_v{0.f, 0.f, 1.f};      ///< quad: second edge

@@ -57,7 +57,8 @@ struct Texture {
 };
 
 /// Surface response in the spirit of Whitted (1980) and the NFF `f` line: a Phong-lit colour
-/// plus perfect mirror reflection and perfect refraction. Defaults give a matte grey.
+/// plus perfect mirror reflection and perfect refraction. Defaults give a matte grey. Every
+/// member has a default, so that a designated initialiser names only what differs from it.
 struct Material {
   std::string name;               ///< for messages and scene files
   Color color{0.7f, 0.7f, 0.7f};  ///< base (diffuse) colour
@@ -68,7 +69,7 @@ struct Material {
   float transmittance = 0.f;      ///< weight of the refracted ray
   float ior = 1.f;                ///< index of refraction (inside / outside)
   Color emission{0.f, 0.f, 0.f};  ///< light emitted towards the viewer, added unshadowed
-  Texture texture;                ///< optional variation of `color` (checker or image)
+  Texture texture{};              ///< optional variation of `color` (checker or image)
   bool fresnel = true;            ///< weight reflection/refraction of dielectrics by Fresnel
 };
 
