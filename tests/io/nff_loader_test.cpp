@@ -13,6 +13,7 @@
 
 #include "../test_paths.h"
 #include "io_test_util.h"
+#include "mesh_test_util.h"
 #include "parse_error_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/nff_loader.h"
@@ -20,6 +21,8 @@
 
 namespace raylab {
 namespace {
+
+using test::expect_vec;
 
 namespace fs = std::filesystem;
 
@@ -49,12 +52,6 @@ void expect_error(const std::string& text, int line, int col, const std::string&
     EXPECT_EQ(e.column(), col);
     EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
   }
-}
-
-void expect_vec(Vec3 got, Vec3 want) {
-  EXPECT_EQ(got.x, want.x);
-  EXPECT_EQ(got.y, want.y);
-  EXPECT_EQ(got.z, want.z);
 }
 
 float triangle_area(const Triangle& t) { return 0.5f * length(triangle_normal(t)); }
