@@ -11,6 +11,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "../test_paths.h"
@@ -75,12 +76,11 @@ void expect_same_scene(const Scene& got, const Scene& want, bool names) {
   expect_same_array(a.disks, b.disks, "disks");
   expect_same_array(a.quads, b.quads, "quads");
   expect_same_array(a.triangle_normals, b.triangle_normals, "triangle normals");
+  const auto objects = [](const Geometry& g) {
+    return std::tie(g.triangle_objects, g.sphere_objects, g.cylinder_objects, g.disk_objects, g.quad_objects);
+  };
   EXPECT_EQ(a.triangle_uvs.size(), b.triangle_uvs.size());
-  EXPECT_EQ(a.triangle_objects, b.triangle_objects);
-  EXPECT_EQ(a.sphere_objects, b.sphere_objects);
-  EXPECT_EQ(a.cylinder_objects, b.cylinder_objects);
-  EXPECT_EQ(a.disk_objects, b.disk_objects);
-  EXPECT_EQ(a.quad_objects, b.quad_objects);
+  EXPECT_EQ(objects(a), objects(b));
 
   ASSERT_EQ(got.objects.size(), want.objects.size());
   for (std::size_t i = 0; i < got.objects.size(); ++i) {
@@ -111,14 +111,11 @@ void expect_same_scene(const Scene& got, const Scene& want, bool names) {
   EXPECT_TRUE(same_bits(got.camera.hither, want.camera.hither));
   const RenderSettings& s = got.settings;
   const RenderSettings& t = want.settings;
-  EXPECT_EQ(s.width, t.width);
-  EXPECT_EQ(s.height, t.height);
-  EXPECT_EQ(s.spp, t.spp);
-  EXPECT_EQ(s.sampler, t.sampler);
-  EXPECT_EQ(s.max_depth, t.max_depth);
-  EXPECT_EQ(s.seed, t.seed);
+  const auto exact_settings = [](const RenderSettings& r) {
+    return std::tie(r.width, r.height, r.spp, r.sampler, r.max_depth, r.seed, r.sky_gradient);
+  };
+  EXPECT_EQ(exact_settings(s), exact_settings(t));
   EXPECT_TRUE(same_bits(s.background, t.background));
-  EXPECT_EQ(s.sky_gradient, t.sky_gradient);
   EXPECT_TRUE(same_bits(s.ambient, t.ambient));
 }
 
