@@ -37,6 +37,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <sstream>
 #include <string>
@@ -97,14 +98,6 @@ struct Exact {
 
 bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
 
-std::string describe(const Ray& r) {
-  std::ostringstream out;
-  out.precision(9);
-  out << "ray o=(" << r.origin.x << ", " << r.origin.y << ", " << r.origin.z << ") d=(" << r.direction.x << ", "
-      << r.direction.y << ", " << r.direction.z << ") [" << r.tmin << ", " << r.tmax << ")";
-  return out.str();
-}
-
 // A closest-hit query's whole result: the answer, the hit record and the ray's tmax after it.
 struct Answer {
   bool found = false;
@@ -146,9 +139,8 @@ std::string wrong_closest(const Geometry& g, const Ray& ray, const Answer& want,
   if (got.found) {
     if (!same_bits(got.tmax, got.hit.t)) return "tmax not shrunk to the hit";
     if (!(got.hit.t >= ray.tmin && got.hit.t < ray.tmax)) return "hit outside [tmin, tmax)";
-    Ray alone = ray;
-    Hit h;
-    if (!g.intersect(got.hit.prim_id, WatertightRay(alone), alone, h) || !same_bits(h.t, got.hit.t)) {
+    const std::optional<Hit> h = hit_alone(g, got.hit.prim_id, ray);
+    if (!h || !same_bits(h->t, got.hit.t)) {
       return "primitive " + std::to_string(got.hit.prim_id) + " alone is not hit at t " + std::to_string(got.hit.t);
     }
   }
