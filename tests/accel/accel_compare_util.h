@@ -40,6 +40,28 @@ inline std::string describe(const Ray& r) {
   return out.str();
 }
 
+/// A closest-hit query on its own copy of the ray (whose tmax then shows what the query shrank it
+/// to). The members bind in this order: `const auto [r, h, found] = closest_hit(accel, ray);`
+struct ClosestHit {
+  Ray ray;
+  Hit hit;
+  bool found = false;
+};
+
+/// Traces `ray` through `accel` (see ClosestHit).
+inline ClosestHit closest_hit(const Accelerator& accel, const Ray& ray) {
+  ClosestHit c{ray, {}, false};
+  c.found = accel.intersect(c.ray, c.hit);
+  return c;
+}
+
+/// The closest hit of each of `rays` by `reference` (invalid where it finds none).
+inline std::vector<Hit> closest_hits(const Accelerator& reference, const std::vector<Ray>& rays) {
+  std::vector<Hit> hits;
+  for (const Ray& ray : rays) hits.push_back(closest_hit(reference, ray).hit);
+  return hits;
+}
+
 /// One ray's closest hit by brute force and by another structure, each traced on its own copy of
 /// the ray (whose tmax then shows what the query shrank it to). The members bind in this order:
 /// `const auto [rb, hb, fb, rv, hv, fv] = both_hits(brute, accel, ray);`
@@ -54,10 +76,8 @@ struct BothHits {
 
 /// Traces `ray` through `brute` and `accel` (see BothHits).
 inline BothHits both_hits(const Accelerator& brute, const Accelerator& accel, const Ray& ray) {
-  BothHits b{ray, {}, false, ray, {}, false};
-  b.brute_found = brute.intersect(b.brute_ray, b.brute_hit);
-  b.found = accel.intersect(b.ray, b.hit);
-  return b;
+  const ClosestHit b = closest_hit(brute, ray), a = closest_hit(accel, ray);
+  return {b.ray, b.hit, b.found, a.ray, a.hit, a.found};
 }
 
 /// A closest-hit query with its traversal counts, on its own copy of the ray. The members bind in
