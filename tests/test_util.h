@@ -1,12 +1,13 @@
 #pragma once
-// Shared by the tests of every folder: the message an error carries, and the words a message
-// must hold.
+// Shared by the tests of every folder: the message an error carries, the words a message must
+// hold, and element-by-element checks of two lists.
 
 #include <gtest/gtest.h>
 
 #include <initializer_list>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "raylab/core/error.h"
 
@@ -35,6 +36,17 @@ void expect_contains_all(const std::string& message, const Words& words) {
 /// Expects `message` to contain each of `words`, written out at the call.
 inline void expect_contains_all(const std::string& message, std::initializer_list<std::string_view> words) {
   expect_contains_all<std::initializer_list<std::string_view>>(message, words);
+}
+
+/// Expects `got` and `want` to be as long, then runs `expect(got[i], want[i])` for each i, traced
+/// as "`what` i".
+template <class T, class Expect>
+void expect_each(const std::vector<T>& got, const std::vector<T>& want, const std::string& what, Expect expect) {
+  ASSERT_EQ(got.size(), want.size()) << what << "s";
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    SCOPED_TRACE(what + " " + std::to_string(i));
+    expect(got[i], want[i]);
+  }
 }
 
 }  // namespace raylab::test

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "../test_paths.h"
+#include "../test_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/nff_loader.h"
 #include "raylab/io/nff_writer.h"
@@ -82,27 +83,20 @@ void expect_same_scene(const Scene& got, const Scene& want, bool names) {
   EXPECT_EQ(a.triangle_uvs.size(), b.triangle_uvs.size());
   EXPECT_EQ(objects(a), objects(b));
 
-  ASSERT_EQ(got.objects.size(), want.objects.size());
-  for (std::size_t i = 0; i < got.objects.size(); ++i) {
-    EXPECT_EQ(got.objects[i].material, want.objects[i].material);
+  test::expect_each(got.objects, want.objects, "object", [names](const SceneObject& x, const SceneObject& y) {
+    EXPECT_EQ(x.material, y.material);
     if (names) {
-      EXPECT_EQ(got.objects[i].name, want.objects[i].name);
+      EXPECT_EQ(x.name, y.name);
     }
-  }
-  ASSERT_EQ(got.materials.size(), want.materials.size());
-  for (std::size_t i = 0; i < got.materials.size(); ++i) {
-    SCOPED_TRACE("material " + std::to_string(i));
-    expect_same_material(got.materials[i], want.materials[i], names);
-  }
-  ASSERT_EQ(got.lights.size(), want.lights.size());
-  for (std::size_t i = 0; i < got.lights.size(); ++i) {
-    const Light& x = got.lights[i];
-    const Light& y = want.lights[i];
+  });
+  test::expect_each(got.materials, want.materials, "material",
+                    [names](const Material& x, const Material& y) { expect_same_material(x, y, names); });
+  test::expect_each(got.lights, want.lights, "light", [](const Light& x, const Light& y) {
     EXPECT_EQ(x.kind, y.kind);
-    EXPECT_TRUE(same_bits(x.position, y.position)) << "light " << i;
-    EXPECT_TRUE(same_bits(x.intensity, y.intensity)) << "light " << i;
+    EXPECT_TRUE(same_bits(x.position, y.position));
+    EXPECT_TRUE(same_bits(x.intensity, y.intensity));
     EXPECT_EQ(x.falloff, y.falloff);
-  }
+  });
   EXPECT_TRUE(same_bits(got.camera.from, want.camera.from));
   EXPECT_TRUE(same_bits(got.camera.at, want.camera.at));
   EXPECT_TRUE(same_bits(got.camera.up, want.camera.up));
