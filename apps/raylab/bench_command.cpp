@@ -133,8 +133,7 @@ void add_options(CLI::App& cmd, BenchArgs& args) {
   cmd.add_option("--rays-out", args.rays_out, "Write the rays of the last traced set as a .rays file");
   cmd.add_option("--hits-out", args.hits_out, "Write our closest hits of the last traced set as a .hits file");
   cmd.add_option("--json", args.json, "Also write the results as JSON to this file ('-': stdout)");
-  add_allow_outside_paths_flag(cmd, args.allow_outside_paths);
-  cmd.add_flag("-q,--quiet", args.quiet, "No progress lines on stderr");
+  add_loading_flags(cmd, args.allow_outside_paths, args.quiet, "No progress lines on stderr");
 }
 
 }  // namespace

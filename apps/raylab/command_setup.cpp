@@ -24,6 +24,13 @@ void check_table_outputs(const std::string& csv, const std::string& json, const 
   }
 }
 
+void add_table_output_options(CLI::App& cmd, std::string& csv, std::string& json, std::string& plot,
+                              const std::string& plot_description) {
+  cmd.add_option("--csv", csv, "Also write the table as CSV to this file");
+  cmd.add_option("--json", json, "Also write the table as JSON to this file");
+  cmd.add_option("--plot", plot, plot_description);
+}
+
 void print_written(std::initializer_list<const std::string*> paths) {
   for (const std::string* path : paths) {
     if (!path->empty()) fmt::print(stderr, "wrote {}\n", *path);
@@ -32,6 +39,11 @@ void print_written(std::initializer_list<const std::string*> paths) {
 
 void add_allow_outside_paths_flag(CLI::App& cmd, bool& allow) {
   cmd.add_flag("--allow-outside-paths", allow, "Let a scene file reference files outside its own folder");
+}
+
+void add_loading_flags(CLI::App& cmd, bool& allow_outside_paths, bool& quiet, const std::string& quiet_description) {
+  add_allow_outside_paths_flag(cmd, allow_outside_paths);
+  cmd.add_flag("-q,--quiet", quiet, quiet_description);
 }
 
 }  // namespace raylab::cli

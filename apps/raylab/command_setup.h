@@ -31,10 +31,19 @@ void add_threads_option(CLI::App& cmd, int& threads, const std::string& descript
 /// --plot that is not .svg, a --csv, --json or --plot that cannot be written (empty: not asked).
 void check_table_outputs(const std::string& csv, const std::string& json, const std::string& plot);
 
+/// Adds the table outputs of compare and quality (checked by check_table_outputs): --csv and
+/// --json, the table as such a file, and --plot, an SVG chart described by `plot_description`.
+void add_table_output_options(CLI::App& cmd, std::string& csv, std::string& json, std::string& plot,
+                              const std::string& plot_description);
+
 /// Prints "wrote PATH" on stderr for each of `paths` that is not empty.
 void print_written(std::initializer_list<const std::string*> paths);
 
 /// Adds --allow-outside-paths: a scene file may reference files outside its own folder.
 void add_allow_outside_paths_flag(CLI::App& cmd, bool& allow);
+
+/// Adds the flags of a command that loads a scene and reports on stderr: --allow-outside-paths,
+/// then -q,--quiet, described by what it silences (`quiet_description`).
+void add_loading_flags(CLI::App& cmd, bool& allow_outside_paths, bool& quiet, const std::string& quiet_description);
 
 }  // namespace raylab::cli

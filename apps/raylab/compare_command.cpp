@@ -110,14 +110,12 @@ void add_options(CLI::App& cmd, CompareArgs& args) {
       ->check(CLI::Range(0.0, 1e9))
       ->capture_default_str();
   add_accel_parameter_options(cmd, args.accel);
-  cmd.add_option("--csv", args.csv, "Also write the table as CSV to this file");
-  cmd.add_option("--json", args.json, "Also write the table as JSON to this file");
+  add_table_output_options(cmd, args.csv, args.json, args.plot,
+                           "Write an SVG chart of Mrays/s, build time and memory per structure");
   cmd.add_option("--heatmaps", args.heatmaps,
                  "Write DIR/<structure>-tests.png and -nodes.png: traversal cost per pixel of the primary rays, one "
                  "colour scale for all structures (the folder is created if missing)");
-  cmd.add_option("--plot", args.plot, "Write an SVG chart of Mrays/s, build time and memory per structure");
-  add_allow_outside_paths_flag(cmd, args.allow_outside_paths);
-  cmd.add_flag("-q,--quiet", args.quiet, "No progress lines on stderr");
+  add_loading_flags(cmd, args.allow_outside_paths, args.quiet, "No progress lines on stderr");
 }
 
 }  // namespace

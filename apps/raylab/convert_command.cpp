@@ -64,8 +64,7 @@ void add_options(CLI::App& cmd, ConvertArgs& args) {
   cmd.add_option("--segments", args.segments, "Segments around tessellated spheres, cylinders and disks")
       ->check(CLI::Range(3, 1024))
       ->capture_default_str();
-  add_allow_outside_paths_flag(cmd, args.allow_outside_paths);
-  cmd.add_flag("-q,--quiet", args.quiet, "No summary");
+  add_loading_flags(cmd, args.allow_outside_paths, args.quiet, "No summary");
 }
 
 }  // namespace

@@ -178,11 +178,9 @@ void add_options(CLI::App& cmd, QualityArgs& args) {
                  "Folder of cached auto references (default: $XDG_CACHE_HOME/raylab/references, else "
                  "~/.cache/raylab/references)");
   add_threads_option(cmd, args.threads);
-  cmd.add_option("--plot", args.plot, "Write an SVG chart: RMSE against primary rays per pixel, log-log");
-  cmd.add_option("--csv", args.csv, "Also write the table as CSV to this file");
-  cmd.add_option("--json", args.json, "Also write the table as JSON to this file");
-  add_allow_outside_paths_flag(cmd, args.allow_outside_paths);
-  cmd.add_flag("-q,--quiet", args.quiet, "No progress on stderr");
+  add_table_output_options(cmd, args.csv, args.json, args.plot,
+                           "Write an SVG chart: RMSE against primary rays per pixel, log-log");
+  add_loading_flags(cmd, args.allow_outside_paths, args.quiet, "No progress on stderr");
 }
 
 }  // namespace

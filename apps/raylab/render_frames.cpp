@@ -13,8 +13,6 @@
 #include "raylab/dist/animation.h"
 #include "raylab/dist/frame_range.h"
 #include "raylab/dist/process_channel.h"
-#include "raylab/dist/rank_failure.h"
-#include "raylab/dist/render_agreement.h"
 #include "raylab/io/atomic_file.h"
 #include "render_modes.h"
 #include "render_report.h"
@@ -84,34 +82,13 @@ int report_frames(const RenderSetup& setup, const dist::Animation& run, FrameWri
   return 0;
 }
 
-}  // namespace
-
-int run_frames(const RenderArgs& given) {
-  if (given.passes || given.checkpoint || given.resume) {
-    throw UsageError(
-        "--frames renders each frame in one go: no --passes, --checkpoint or --resume (frames "
-        "already written can be skipped by giving a later --frames range)");
-  }
-  const auto [first, last] = *dist::parse_frame_range(*given.frames);
-  install_interrupt_handlers(remove_pending_temporary_files, true);
-  dist::ProcessChannel process;
-  dist::Channel& channel = process.channel();
-  const bool root = channel.rank() == 0;
-  std::unique_ptr<RenderSetup> prepared;
-  try {
-    prepared = prepare_frames(given, root, first);
-  } catch (const std::exception& e) {
-    return dist::fail_outside_protocol(channel, e);  // (one process: rethrown, there is no other rank)
-  }
-  RenderSetup& setup = *prepared;
+// Every rank's part of frames `first` to `last` over `channel`; rank 0 writes them and reports.
+int render_frames(RenderSetup& setup, bool root, dist::Channel& channel, const std::string& host, int first, int last) {
   const RenderArgs& args = setup.args;
   dist::AnimationOptions options;
   options.first = first;
   options.last = last;
-  options.render = render_options(setup);
-  options.agreement = dist::render_agreement(setup.header);
-  options.rank_timeout_seconds = args.rank_timeout;
-  options.host = process.host();
+  set_rank_options(options, setup, host);
   FrameWriter writer(args, last - first + 1);
   if (root) {
     if (!args.quiet) writer.bar.emplace("frames", stderr, writer.interactive);
@@ -121,6 +98,24 @@ int run_frames(const RenderArgs& given) {
   const dist::Animation run = dist::render_animation(channel, setup.scene, *setup.accel, options);
   if (!root) return run.exit_status;
   return report_frames(setup, run, writer, first, last, channel.size());
+}
+
+}  // namespace
+
+int run_frames(const RenderArgs& given) {
+  if (given.passes || given.checkpoint || given.resume) {
+    throw UsageError(
+        "--frames renders each frame in one go: no --passes, --checkpoint or --resume (frames "
+        "already written can be skipped by giving a later --frames range)");
+  }
+  const auto [first_frame, last_frame] = *dist::parse_frame_range(*given.frames);
+  const int first = first_frame, last = last_frame;
+  install_interrupt_handlers(remove_pending_temporary_files, true);
+  dist::ProcessChannel process;
+  dist::Channel& channel = process.channel();
+  return prepare_then_render(
+      channel, [&](bool root) { return prepare_frames(given, root, first); },
+      [&](RenderSetup& setup, bool root) { return render_frames(setup, root, channel, process.host(), first, last); });
 }
 
 }  // namespace raylab::cli

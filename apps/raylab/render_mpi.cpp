@@ -11,8 +11,6 @@
 #include "raylab/dist/image_on_ranks.h"
 #include "raylab/dist/launcher.h"
 #include "raylab/dist/mpi_channel.h"
-#include "raylab/dist/rank_failure.h"
-#include "raylab/dist/render_agreement.h"
 #include "raylab/io/atomic_file.h"
 #include "raylab/render/adaptive.h"
 #include "render_modes.h"
@@ -37,10 +35,7 @@ std::unique_ptr<RenderSetup> prepare_on_ranks(const RenderArgs& given, bool root
 dist::DistributedOptions distributed_options(RenderSetup& setup, bool root, const std::string& host,
                                              std::optional<ProgressBar>& bar) {
   dist::DistributedOptions options;
-  options.render = render_options(setup);
-  options.agreement = dist::render_agreement(setup.header);
-  options.rank_timeout_seconds = setup.args.rank_timeout;
-  options.host = host;
+  set_rank_options(options, setup, host);
   if (!root) return options;
   show_progress(setup.args, options.render, bar);
   options.render.progress = &setup.progress;
@@ -57,25 +52,10 @@ dist::DistributedOptions distributed_options(RenderSetup& setup, bool root, cons
   return options;
 }
 
-}  // namespace
-
-int run_under_mpi(const RenderArgs& given) {
-  dist::require_mpi_build();
-  if (given.spd_protocol) throw UsageError("--spd-protocol renders in one process: run it without mpirun");
-  // Until the render starts there is nothing to save: a signal ends the run at once.
-  install_interrupt_handlers(remove_pending_temporary_files, true);
-  dist::MpiSession session;
-  dist::Channel& channel = session.channel();
-  const bool root = channel.rank() == 0;
-  std::unique_ptr<RenderSetup> prepared;
-  try {
-    prepared = prepare_on_ranks(given, root);
-  } catch (const std::exception& e) {
-    return dist::fail_outside_protocol(channel, e);
-  }
-  RenderSetup& setup = *prepared;
+// Every rank's part of the image over `channel`; rank 0 writes it and reports.
+int render_image(RenderSetup& setup, bool root, dist::Channel& channel, const std::string& host) {
   std::optional<ProgressBar> bar;
-  const dist::DistributedOptions options = distributed_options(setup, root, session.host(), bar);
+  const dist::DistributedOptions options = distributed_options(setup, root, host, bar);
   const dist::ImageOnRanks run = dist::render_image_on_ranks(channel, setup.scene, *setup.accel, options);
   if (!root) return run.exit_status;
   if (run.result.outcome == dist::DistributedOutcome::kFailed) {
@@ -91,6 +71,20 @@ int run_under_mpi(const RenderArgs& given) {
     return report_interrupted(setup, run.film, run.result.render, bar, signal, false);
   }
   return report_finished(setup, run.film, run.result.render, bar, &run.result.ranks, channel.size());
+}
+
+}  // namespace
+
+int run_under_mpi(const RenderArgs& given) {
+  dist::require_mpi_build();
+  if (given.spd_protocol) throw UsageError("--spd-protocol renders in one process: run it without mpirun");
+  // Until the render starts there is nothing to save: a signal ends the run at once.
+  install_interrupt_handlers(remove_pending_temporary_files, true);
+  dist::MpiSession session;
+  dist::Channel& channel = session.channel();
+  return prepare_then_render(
+      channel, [&](bool root) { return prepare_on_ranks(given, root); },
+      [&](RenderSetup& setup, bool root) { return render_image(setup, root, channel, session.host()); });
 }
 
 }  // namespace raylab::cli

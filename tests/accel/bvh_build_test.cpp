@@ -46,14 +46,20 @@ void expect_same_tree(const BvhTree& a, const BvhTree& b) {
   EXPECT_EQ(a.leaf_count, b.leaf_count);
 }
 
-// Enough triangles that the root bins in parallel and subtrees become tasks.
-Geometry many_triangles(std::uint64_t seed) {
+// `triangles` random triangles of size 0.1 to `max_size`, then `spheres` spheres of radius 0.1 to
+// 2, all in [-50, 50]^3 and in no spatial order.
+Geometry random_soup(std::uint64_t seed, int triangles, float max_size, int spheres) {
   Sampler s(seed);
   Geometry g;
-  for (int i = 0; i < 17000; ++i) g.add(random_triangle(s, s.in_box(Vec3(-50.f), Vec3(50.f)), s.uni(0.1f, 4.f)), 0);
-  for (int i = 0; i < 500; ++i) g.add(Sphere{s.in_box(Vec3(-50.f), Vec3(50.f)), s.uni(0.1f, 2.f)}, 1);
+  for (int i = 0; i < triangles; ++i) {
+    g.add(random_triangle(s, s.in_box(Vec3(-50.f), Vec3(50.f)), s.uni(0.1f, max_size)), 0);
+  }
+  for (int i = 0; i < spheres; ++i) g.add(Sphere{s.in_box(Vec3(-50.f), Vec3(50.f)), s.uni(0.1f, 2.f)}, 1);
   return g;
 }
+
+// Enough triangles that the root bins in parallel and subtrees become tasks.
+Geometry many_triangles(std::uint64_t seed) { return random_soup(seed, 17000, 4.f, 500); }
 
 // A disk fan of long thin triangles meeting at the centre, a sliver soup, and a few spheres:
 // object splits leave heavily overlapping children here, spatial splits do not.
@@ -89,13 +95,7 @@ TEST(BvhBuild, SameTreeWithOneAndTwoThreads) {
 // Enough triangles that the root and the first levels partition in parallel (several chunks of
 // bvh_build::kPartitionChunk references, the last one partial), in an order that is not
 // spatial (so chunks hold both sides).
-Geometry many_more_triangles(std::uint64_t seed) {
-  Sampler s(seed);
-  Geometry g;
-  for (int i = 0; i < 80000; ++i) g.add(random_triangle(s, s.in_box(Vec3(-50.f), Vec3(50.f)), s.uni(0.1f, 2.f)), 0);
-  for (int i = 0; i < 300; ++i) g.add(Sphere{s.in_box(Vec3(-50.f), Vec3(50.f)), s.uni(0.1f, 2.f)}, 1);
-  return g;
-}
+Geometry many_more_triangles(std::uint64_t seed) { return random_soup(seed, 80000, 2.f, 300); }
 
 TEST(BvhBuild, SameTreeWithOneTwoAndThreeThreadsOnALargeScene) {
   const Geometry g = many_more_triangles(4);

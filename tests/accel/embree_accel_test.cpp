@@ -9,10 +9,12 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "accel_compare_util.h"
 #include "raylab/accel/brute_force.h"
 #include "raylab/accel/embree_accel.h"
 #include "raylab/accel/factory.h"
@@ -24,15 +26,9 @@ namespace {
 
 using namespace test_scenes;
 
-constexpr float kRelTol = 1e-4f;
-
-bool near(float a, float b) { return std::fabs(a - b) <= kRelTol * std::max(std::fabs(a), std::fabs(b)); }
-
-std::string describe(const Ray& r) {
-  return "ray o=(" + std::to_string(r.origin.x) + ", " + std::to_string(r.origin.y) + ", " +
-         std::to_string(r.origin.z) + ") d=(" + std::to_string(r.direction.x) + ", " + std::to_string(r.direction.y) +
-         ", " + std::to_string(r.direction.z) + ") tmin=" + std::to_string(r.tmin);
-}
+// Relative tolerance of distances: Embree's t comes from another formula than ours, so it is
+// looser than the kRelTol our structures meet.
+constexpr float kEmbreeRelTol = 1e-4f;
 
 double max_abs(Vec3 v) { return std::max({std::fabs(double(v.x)), std::fabs(double(v.y)), std::fabs(double(v.z))}); }
 
@@ -75,36 +71,32 @@ double position_tolerance(const Geometry& g, std::uint32_t id, const Ray& ray) {
   return 64.0 * 6e-8 * (longest * longest / area2) * reach / std::max(cosine, 1e-6);
 }
 
-// True when Embree's distance `te` to its primitive `id` matches `tb`: within kRelTol, or within
+// True when Embree's distance `te` to its primitive `id` matches `tb`: within kEmbreeRelTol, or within
 // the triangle's position tolerance.
 bool same_distance(const Geometry& g, std::uint32_t id, const Ray& ray, float tb, float te) {
-  return near(tb, te) || std::fabs(double(tb) - te) * length(ray.direction) <= position_tolerance(g, id, ray);
+  return near(tb, te, kEmbreeRelTol) ||
+         std::fabs(double(tb) - te) * length(ray.direction) <= position_tolerance(g, id, ray);
 }
 
 // Compares every query of `embree` with `brute` on `rays`. Returns the number of hits. Distances
 // and barycentrics may differ by what the triangle's conditioning allows (position_tolerance);
 // where the two disagree on which primitive is hit, it must be a tie, or one of the two hits must
 // graze a triangle edge (then the ray is counted, not failed, and such rays must stay rare).
-int compare(const Geometry& g, const Accelerator& embree, const Accelerator& brute, const std::vector<Ray>& rays,
-            Sampler& s) {
+int compare_with_embree(const Geometry& g, const Accelerator& embree, const Accelerator& brute,
+                        const std::vector<Ray>& rays, Sampler& s) {
   int failures = 0, hits = 0, ties = 0, grazes = 0;
   auto fail = [&](const std::string& what, const Ray& r) {
     if (++failures <= 5) ADD_FAILURE() << what << " for " << describe(r);
   };
   for (const Ray& ray : rays) {
-    Ray rb = ray, re = ray;
-    Hit hb, he;
-    const bool fb = brute.intersect(rb, hb);
-    const bool fe = embree.intersect(re, he);
+    const auto [rb, hb, fb, re, he, fe] = both_hits(brute, embree, ray);
     bool agree = fb == fe;
     if (agree && fb && hb.prim_id == he.prim_id) {
       agree = same_distance(g, he.prim_id, ray, hb.t, he.t);
     } else if (agree && fb) {
       // A tie: Embree's primitive, tested alone by our code, hits where brute force's does.
-      Ray alone = ray;
-      Hit h;
-      agree = g.intersect(he.prim_id, WatertightRay(alone), alone, h) && near(h.t, hb.t) &&
-              same_distance(g, he.prim_id, ray, h.t, he.t);
+      const std::optional<Hit> h = hit_alone(g, he.prim_id, ray);
+      agree = h && near(h->t, hb.t, kEmbreeRelTol) && same_distance(g, he.prim_id, ray, h->t, he.t);
       ties += agree;
     }
     if (!agree) {
@@ -141,18 +133,17 @@ int compare(const Geometry& g, const Accelerator& embree, const Accelerator& bru
     }
 
     // Counted: the same answer; Embree has no traversal counts, so only hits are counted.
-    Ray rc = ray;
-    Hit hc;
-    TraversalStats st;
-    const bool fc = embree.intersect_counted(rc, hc, st);
+    const auto [rc, hc, fc, st] = counted_hit(embree, ray);
     if (fc != fe || hc.t != he.t || hc.prim_id != he.prim_id) fail("intersect_counted differs", ray);
     if (st.hits != (fc ? 1u : 0u) || st.nodes_visited != 0 || st.prim_tests != 0) fail("counts", ray);
 
     // Any-hit with a random tmax: occluded iff the closest hit lies before tmax.
-    Ray ro = ray;
-    ro.tmax = fb ? hb.t * s.uni(0.5f, 1.5f) : (s.rng.next_float() < 0.5f ? kInf : s.uni(0.f, 1e5f));
+    const Ray ro = with_random_tmax(ray, fb, hb.t, s);
     // Too close to call: within the tolerance of either distance, or between the two.
-    if (fb && (near(ro.tmax, hb.t) || near(ro.tmax, he.t) || (ro.tmax - hb.t) * (ro.tmax - he.t) <= 0.f)) continue;
+    if (fb && (near(ro.tmax, hb.t, kEmbreeRelTol) || near(ro.tmax, he.t, kEmbreeRelTol) ||
+               (ro.tmax - hb.t) * (ro.tmax - he.t) <= 0.f)) {
+      continue;
+    }
     const bool expected = fb && hb.t < ro.tmax;
     if (embree.occluded(ro) != expected) fail(expected ? "occluded missed" : "occluded phantom", ro);
     TraversalStats so;
@@ -193,7 +184,7 @@ TEST_P(EmbreeVsBrute, SameHitsAsBruteForce) {
   const Box3 b = embree->bounds(), gb = g.bounds();
   EXPECT_TRUE(b.lo == gb.lo && b.hi == gb.hi);
   const std::vector<Ray> rays = random_rays(g, s, 3000);
-  EXPECT_GT(compare(g, *embree, brute, rays, s), 300);
+  EXPECT_GT(compare_with_embree(g, *embree, brute, rays, s), 300);
 }
 
 TEST_P(EmbreeVsBrute, SubsetOfIds) {
@@ -205,7 +196,7 @@ TEST_P(EmbreeVsBrute, SubsetOfIds) {
   const auto embree = make_embree_accelerator(g, ids);
   const BruteForce brute(g, ids);
   EXPECT_EQ(embree->info().primitive_count, ids.size());
-  compare(g, *embree, brute, random_rays(g, s, 1000), s);
+  compare_with_embree(g, *embree, brute, random_rays(g, s, 1000), s);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, EmbreeVsBrute, ::testing::ValuesIn(kScenes),
@@ -297,7 +288,7 @@ TEST(EmbreeAccel, GroupItemsCallBackIntoNestedStructures) {
     EXPECT_EQ(embree->occluded(ray), ff) << describe(ray);
   }
   EXPECT_GT(hits, 300);
-  compare(g, *embree, top, rays, s);
+  compare_with_embree(g, *embree, top, rays, s);
 }
 
 TEST(EmbreeAccel, ConcurrentQueriesGiveTheSameAnswers) {

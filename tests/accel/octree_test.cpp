@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "accel_compare_util.h"
 #include "raylab/accel/brute_force.h"
 #include "raylab/accel/octree.h"
 #include "raylab/geometry/overlap.h"
@@ -26,12 +27,6 @@ namespace raylab {
 namespace {
 
 using namespace test_scenes;
-
-constexpr float kRelTol = 1e-5f;
-
-bool near(float a, float b) { return std::fabs(a - b) <= kRelTol * std::max(std::fabs(a), std::fabs(b)); }
-
-bool same_hit(const Hit& a, const Hit& b) { return a.t == b.t && a.prim_id == b.prim_id && a.u == b.u && a.v == b.v; }
 
 // Brute force's answers for a ray set, computed once and checked against several octrees.
 struct Reference {
@@ -55,20 +50,13 @@ Reference make_reference(const Geometry& g, std::vector<Ray> rays, Sampler& s) {
       ref.occluded.push_back(h.valid() ? 1 : 0);
       continue;
     }
-    Ray sh = ray;
-    sh.tmax = h.valid() ? h.t * s.uni(0.5f, 1.5f) : (s.rng.next_float() < 0.5f ? kInf : s.uni(0.f, 1e5f));
+    Ray sh = with_random_tmax(ray, h.valid(), h.t, s);
     const bool close = h.valid() && std::fabs(sh.tmax - h.t) <= kRelTol * h.t;
     if (!(sh.tmax > sh.tmin)) sh.tmax = kInf;
     ref.shadow.push_back(sh);
     ref.occluded.push_back(close ? -1 : (h.valid() && h.t < sh.tmax) ? 1 : 0);
   }
   return ref;
-}
-
-std::string describe(const Ray& r) {
-  return "ray o=(" + std::to_string(r.origin.x) + ", " + std::to_string(r.origin.y) + ", " +
-         std::to_string(r.origin.z) + ") d=(" + std::to_string(r.direction.x) + ", " + std::to_string(r.direction.y) +
-         ", " + std::to_string(r.direction.z) + ") tmin=" + std::to_string(r.tmin) + " tmax=" + std::to_string(r.tmax);
 }
 
 // Checks every query of `octree` against the reference; returns the total traversal work.
@@ -89,22 +77,16 @@ TraversalStats check(const Geometry& g, const Octree& octree, const Reference& r
     } else if (fv) {
       if (rv.tmax != hv.t) fail("tmax not shrunk to the hit", ray);
       if (!near(hb.t, hv.t)) fail("t differs: " + std::to_string(hb.t) + " vs " + std::to_string(hv.t), ray);
-      if (hb.prim_id != hv.prim_id) {
-        // Allowed only for a tie: the octree's primitive, tested alone, must hit at the same t.
-        Ray alone = ray;
-        Hit h;
-        if (!g.intersect(hv.prim_id, WatertightRay(alone), alone, h) || !near(h.t, hb.t)) {
-          fail("primitive " + std::to_string(hv.prim_id) + " instead of " + std::to_string(hb.prim_id), ray);
-        }
+      // Another primitive is allowed only for a tie.
+      if (hb.prim_id != hv.prim_id && !is_tie(g, hv.prim_id, ray, hb.t)) {
+        fail("primitive " + std::to_string(hv.prim_id) + " instead of " + std::to_string(hb.prim_id), ray);
       }
     } else if (rv.tmax != ray.tmax || hv.valid()) {
       fail("a miss changed the ray or the hit", ray);
     }
 
-    Ray rc = ray;
-    Hit hc;
-    TraversalStats st;
-    if (octree.intersect_counted(rc, hc, st) != fv || !same_hit(hc, hv) || rc.tmax != rv.tmax) {
+    const auto [rc, hc, fc, st] = counted_hit(octree, ray);
+    if (fc != fv || !same_hit(hc, hv) || rc.tmax != rv.tmax) {
       fail("intersect_counted differs from intersect", ray);
     }
     if (st.hits != (fv ? 1u : 0u) || st.nodes_visited > octree.tree().nodes.size() ||
@@ -650,16 +632,13 @@ TEST(Octree, TiesAndTheIncomingHit) {
 TEST(Octree, SubsetOfIds) {
   Sampler s(19);
   const Geometry g = every_shape_kind(s);
-  std::vector<std::uint32_t> ids;
-  for (std::uint32_t id = 0; id < g.size(); id += 3) ids.push_back(id);
+  const std::vector<std::uint32_t> ids = every_third_id(g);
   const Octree octree(g, ids);
   const BruteForce brute(g, ids);
   EXPECT_EQ(octree.info().primitive_count, ids.size());
   int failures = 0;
   for (const Ray& ray : random_rays(g, s, 2000)) {
-    Ray ro = ray, rb = ray;
-    Hit ho, hb;
-    const bool fo = octree.intersect(ro, ho), fb = brute.intersect(rb, hb);
+    const auto [rb, hb, fb, ro, ho, fo] = both_hits(brute, octree, ray);
     if (fo != fb || (fo && (!near(ho.t, hb.t) || std::find(ids.begin(), ids.end(), ho.prim_id) == ids.end()))) {
       if (++failures <= 5) ADD_FAILURE() << describe(ray);
     }

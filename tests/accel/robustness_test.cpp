@@ -37,6 +37,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <sstream>
 #include <string>
@@ -97,14 +98,6 @@ struct Exact {
 
 bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
 
-std::string describe(const Ray& r) {
-  std::ostringstream out;
-  out.precision(9);
-  out << "ray o=(" << r.origin.x << ", " << r.origin.y << ", " << r.origin.z << ") d=(" << r.direction.x << ", "
-      << r.direction.y << ", " << r.direction.z << ") [" << r.tmin << ", " << r.tmax << ")";
-  return out.str();
-}
-
 // A closest-hit query's whole result: the answer, the hit record and the ray's tmax after it.
 struct Answer {
   bool found = false;
@@ -146,9 +139,8 @@ std::string wrong_closest(const Geometry& g, const Ray& ray, const Answer& want,
   if (got.found) {
     if (!same_bits(got.tmax, got.hit.t)) return "tmax not shrunk to the hit";
     if (!(got.hit.t >= ray.tmin && got.hit.t < ray.tmax)) return "hit outside [tmin, tmax)";
-    Ray alone = ray;
-    Hit h;
-    if (!g.intersect(got.hit.prim_id, WatertightRay(alone), alone, h) || !same_bits(h.t, got.hit.t)) {
+    const std::optional<Hit> h = hit_alone(g, got.hit.prim_id, ray);
+    if (!h || !same_bits(h->t, got.hit.t)) {
       return "primitive " + std::to_string(got.hit.prim_id) + " alone is not hit at t " + std::to_string(got.hit.t);
     }
   }
@@ -362,6 +354,14 @@ std::vector<std::string> factory_names() {
   return names;
 }
 
+// Hits among `rays` by brute force on `g`: a check must have some to say anything about them.
+int brute_hits(const Geometry& g, const std::vector<Ray>& rays) {
+  const BruteForce brute(g);
+  int hits = 0;
+  for (const Ray& r : rays) hits += closest(brute, r).found ? 1 : 0;
+  return hits;
+}
+
 class RobustAccel : public ::testing::TestWithParam<std::string> {
  protected:
   std::unique_ptr<Accelerator> make(const Geometry& g) const { return make_accelerator(GetParam(), g); }
@@ -386,15 +386,15 @@ class RobustAccel : public ::testing::TestWithParam<std::string> {
       for (const auto& [first, n] : groups.ranges) check_group(*accel, g, groups.rays, want, first, n, exact, failures);
     }
   }
-};
 
-// Hits among `rays` by brute force on `g`: a check must have some to say anything about them.
-int brute_hits(const Geometry& g, const std::vector<Ray>& rays) {
-  const BruteForce brute(g);
-  int hits = 0;
-  for (const Ray& r : rays) hits += closest(brute, r).found ? 1 : 0;
-  return hits;
-}
+  // Groups of bad rays mixed with good ones on `g` (mixed_groups, 20 of each size), of which at
+  // least a fifth hit, so that a wrong answer shows.
+  void check_mixed_groups(const Geometry& g, Sampler& s, const std::string& where) const {
+    const Groups groups = mixed_groups(g, s, 20);
+    ASSERT_GT(brute_hits(g, groups.rays), int(groups.rays.size()) / 5);
+    check_scene(g, {}, groups, where);
+  }
+};
 
 // Every shape kind, so that each primitive test (triangles inline and in blocks, spheres, the
 // others through Geometry) meets every bad ray.
@@ -415,9 +415,7 @@ TEST_P(RobustAccel, BadRaysAlone) {
 TEST_P(RobustAccel, BadRaysMixedWithGoodOnesInGroups) {
   Sampler s(72);
   const Geometry g = every_shape_kind(s);
-  const Groups groups = mixed_groups(g, s, 20);
-  ASSERT_GT(brute_hits(g, groups.rays), int(groups.rays.size()) / 5);
-  check_scene(g, {}, groups, "every shape kind");
+  check_mixed_groups(g, s, "every shape kind");
 }
 
 // Triangles alone: the wide BVH's leaves then test them in SIMD blocks and ray-parallel across a
@@ -425,9 +423,7 @@ TEST_P(RobustAccel, BadRaysMixedWithGoodOnesInGroups) {
 TEST_P(RobustAccel, BadRaysInGroupsOnTrianglesOnly) {
   Sampler s(73);
   const Geometry g = dense_soup(s);
-  const Groups groups = mixed_groups(g, s, 20);
-  ASSERT_GT(brute_hits(g, groups.rays), int(groups.rays.size()) / 5);
-  check_scene(g, {}, groups, "dense triangle soup");
+  check_mixed_groups(g, s, "dense triangle soup");
 }
 
 // tmin < 0 asks for hits behind the origin too: [tmin, tmax) is the whole contract. Brute force,

@@ -37,20 +37,13 @@ void expect_same_as_brute(const Geometry& g, const Accelerator& grid, const std:
   const BruteForce brute(g);
   int failures = 0;
   for (const Ray& ray : rays) {
-    Ray rb = ray, rg = ray;
-    Hit hb, hg;
-    const bool fb = brute.intersect(rb, hb);
-    const bool fg = grid.intersect(rg, hg);
+    const auto [rb, hb, fb, rg, hg, fg] = both_hits(brute, grid, ray);
     bool ok = fb == fg;
     if (ok && fb) {
       // The same primitive, or another one at the same distance (a tie broken the same way
       // requires the same set of candidates, which brute force has by construction).
       ok = near(hb.t, hg.t) && rg.tmax == hg.t;
-      if (ok && hb.prim_id != hg.prim_id) {
-        Ray alone = ray;
-        Hit h;
-        ok = g.intersect(hg.prim_id, WatertightRay(alone), alone, h) && near(h.t, hb.t);
-      }
+      if (ok && hb.prim_id != hg.prim_id) ok = is_tie(g, hg.prim_id, ray, hb.t);
     }
     if (ok && !fb) ok = rg.tmax == ray.tmax && !hg.valid();
     Ray ro = ray;
@@ -434,16 +427,13 @@ TEST(GridAdversarial, IncomingHitAndTies) {
 TEST(GridAdversarial, SubsetOfIds) {
   Sampler s(25);
   const Geometry g = spheres_and_triangles(s);
-  std::vector<std::uint32_t> ids;
-  for (std::uint32_t i = 0; i < g.size(); i += 3) ids.push_back(i);
+  const std::vector<std::uint32_t> ids = every_third_id(g);
   const UniformGrid grid(g, ids, GridConfig{3.f});
   const BruteForce brute(g, ids);
   EXPECT_EQ(grid.info().primitive_count, ids.size());
   int failures = 0;
   for (const Ray& ray : random_rays(g, s, 2000)) {
-    Ray rb = ray, rg = ray;
-    Hit hb, hg;
-    const bool fb = brute.intersect(rb, hb), fg = grid.intersect(rg, hg);
+    const auto [rb, hb, fb, rg, hg, fg] = both_hits(brute, grid, ray);
     if (fb != fg || (fb && (hb.prim_id != hg.prim_id || hb.t != hg.t)) || grid.occluded(ray) != brute.occluded(ray)) {
       ++failures;
     }

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -307,58 +308,68 @@ TEST(TriangleWatertight, RotatedHeightFieldFarFromOrigin) {
 // ---------------------------------------------------------------------------------------------
 // Cylinders and cones (open, no caps)
 
+// Where the ray from `o` along `d`, for t in [0, tmax), first meets the open cylinder or cone `c`:
+// its distance and its height fraction (0 at the base, 1 at the apex); nothing when it misses.
+struct CylinderHit {
+  float t = 0.f, height = 0.f;
+};
+
+std::optional<CylinderHit> cylinder_hit(const Cylinder& c, Vec3 o, Vec3 d, float tmax = kInf) {
+  CylinderHit hit;
+  if (!intersect_cylinder(c, Ray{o, 0.f, d}, 0.f, tmax, hit.t, hit.height)) return std::nullopt;
+  return hit;
+}
+
+// Expects the ray from `o` along `d` to meet `c` at distance `t` and height fraction `height`.
+void expect_cylinder_hit(const Cylinder& c, Vec3 o, Vec3 d, float t, float height) {
+  const std::optional<CylinderHit> hit = cylinder_hit(c, o, d);
+  ASSERT_TRUE(hit);
+  EXPECT_FLOAT_EQ(hit->t, t);
+  EXPECT_FLOAT_EQ(hit->height, height);
+}
+
 TEST(Cylinder, PerpendicularRayHitsAtDistanceMinusRadius) {
   const Cylinder c{{0.f, 0.f, 0.f}, 1.f, {0.f, 0.f, 4.f}, 1.f};
-  float t = 0.f, h = 0.f;
-  ASSERT_TRUE(intersect_cylinder(c, Ray{{5.f, 0.f, 2.f}, 0.f, {-1.f, 0.f, 0.f}}, 0.f, kInf, t, h));
-  EXPECT_FLOAT_EQ(t, 4.f);
-  EXPECT_FLOAT_EQ(h, 0.5f);
+  expect_cylinder_hit(c, {5.f, 0.f, 2.f}, {-1.f, 0.f, 0.f}, 4.f, 0.5f);
   // A tilted axis and a general direction, against the closed-form distance to the axis line.
   const Cylinder tilted{{1.f, 2.f, 3.f}, 0.5f, {4.f, 6.f, 3.f}, 0.5f};  // axis along (0.6, 0.8, 0)
   const Vec3 foot{2.5f, 4.f, 3.f};                                      // on the axis, halfway
-  ASSERT_TRUE(intersect_cylinder(tilted, Ray{foot + Vec3{0.f, 0.f, 10.f}, 0.f, {0.f, 0.f, -1.f}}, 0.f, kInf, t, h));
-  EXPECT_FLOAT_EQ(t, 9.5f);
-  EXPECT_NEAR(h, 0.5f, 1e-6f);
+  const std::optional<CylinderHit> hit = cylinder_hit(tilted, foot + Vec3{0.f, 0.f, 10.f}, {0.f, 0.f, -1.f});
+  ASSERT_TRUE(hit);
+  EXPECT_FLOAT_EQ(hit->t, 9.5f);
+  EXPECT_NEAR(hit->height, 0.5f, 1e-6f);
 }
 
 TEST(Cylinder, InsideHitsFarWallParallelInsideMisses) {
   const Cylinder c{{0.f, 0.f, 0.f}, 1.f, {0.f, 0.f, 4.f}, 1.f};
-  float t = 0.f, h = 0.f;
-  ASSERT_TRUE(intersect_cylinder(c, Ray{{0.5f, 0.f, 2.f}, 0.f, {-1.f, 0.f, 0.f}}, 0.f, kInf, t, h));
-  EXPECT_FLOAT_EQ(t, 1.5f);
+  const std::optional<CylinderHit> inside = cylinder_hit(c, {0.5f, 0.f, 2.f}, {-1.f, 0.f, 0.f});
+  ASSERT_TRUE(inside);
+  EXPECT_FLOAT_EQ(inside->t, 1.5f);
   // Along the axis, inside or outside: an open tube has nothing to hit.
-  EXPECT_FALSE(intersect_cylinder(c, Ray{{0.5f, 0.f, -1.f}, 0.f, {0.f, 0.f, 1.f}}, 0.f, kInf, t, h));
-  EXPECT_FALSE(intersect_cylinder(c, Ray{{2.f, 0.f, -1.f}, 0.f, {0.f, 0.f, 1.f}}, 0.f, kInf, t, h));
+  EXPECT_FALSE(cylinder_hit(c, {0.5f, 0.f, -1.f}, {0.f, 0.f, 1.f}));
+  EXPECT_FALSE(cylinder_hit(c, {2.f, 0.f, -1.f}, {0.f, 0.f, 1.f}));
 }
 
 TEST(Cylinder, HitsOutsideHeightRangeAreRejected) {
   const Cylinder c{{0.f, 0.f, 0.f}, 1.f, {0.f, 0.f, 4.f}, 1.f};
-  float t = 0.f, h = 0.f;
-  EXPECT_FALSE(intersect_cylinder(c, Ray{{5.f, 0.f, 4.5f}, 0.f, {-1.f, 0.f, 0.f}}, 0.f, kInf, t, h));
-  EXPECT_FALSE(intersect_cylinder(c, Ray{{5.f, 0.f, -0.5f}, 0.f, {-1.f, 0.f, 0.f}}, 0.f, kInf, t, h));
+  EXPECT_FALSE(cylinder_hit(c, {5.f, 0.f, 4.5f}, {-1.f, 0.f, 0.f}));
+  EXPECT_FALSE(cylinder_hit(c, {5.f, 0.f, -0.5f}, {-1.f, 0.f, 0.f}));
   // Entering through the open top: the near root (z = 5) is above the apex, the far one counts.
-  ASSERT_TRUE(intersect_cylinder(c, Ray{{-3.f, 0.f, 7.f}, 0.f, {1.f, 0.f, -1.f}}, 0.f, kInf, t, h));
-  EXPECT_FLOAT_EQ(t, 4.f);
-  EXPECT_FLOAT_EQ(h, 0.75f);
-  EXPECT_FALSE(intersect_cylinder(c, Ray{{5.f, 0.f, 2.f}, 0.f, {-1.f, 0.f, 0.f}}, 0.f, 4.f, t, h));  // tmax
+  expect_cylinder_hit(c, {-3.f, 0.f, 7.f}, {1.f, 0.f, -1.f}, 4.f, 0.75f);
+  EXPECT_FALSE(cylinder_hit(c, {5.f, 0.f, 2.f}, {-1.f, 0.f, 0.f}, 4.f));  // tmax
 }
 
 TEST(Cone, PerpendicularAndGeneratorRays) {
   // Base radius 1 at y = 0 narrowing to a point at y = 1.
   const Cylinder cone{{0.f, 0.f, 0.f}, 1.f, {0.f, 1.f, 0.f}, 0.f};
-  float t = 0.f, h = 0.f;
-  ASSERT_TRUE(intersect_cylinder(cone, Ray{{3.f, 0.5f, 0.f}, 0.f, {-1.f, 0.f, 0.f}}, 0.f, kInf, t, h));
-  EXPECT_FLOAT_EQ(t, 2.5f);
-  EXPECT_FLOAT_EQ(h, 0.5f);
+  expect_cylinder_hit(cone, {3.f, 0.5f, 0.f}, {-1.f, 0.f, 0.f}, 2.5f, 0.5f);
   // Parallel to the generator through (1,0,0)-(0,1,0): the quadratic degenerates to a line.
-  ASSERT_TRUE(intersect_cylinder(cone, Ray{{0.f, 0.f, 0.f}, 0.f, {-1.f, 1.f, 0.f}}, 0.f, kInf, t, h));
-  EXPECT_FLOAT_EQ(t, 0.5f);
-  EXPECT_FLOAT_EQ(h, 0.5f);
+  expect_cylinder_hit(cone, {0.f, 0.f, 0.f}, {-1.f, 1.f, 0.f}, 0.5f, 0.5f);
   // The same direction from outside meets only the mirror nappe above the apex: rejected.
-  EXPECT_FALSE(intersect_cylinder(cone, Ray{{2.f, 0.f, 0.f}, 0.f, {-1.f, 1.f, 0.f}}, 0.f, kInf, t, h));
+  EXPECT_FALSE(cylinder_hit(cone, {2.f, 0.f, 0.f}, {-1.f, 1.f, 0.f}));
   // Below the base / above the apex.
-  EXPECT_FALSE(intersect_cylinder(cone, Ray{{3.f, -0.5f, 0.f}, 0.f, {-1.f, 0.f, 0.f}}, 0.f, kInf, t, h));
-  EXPECT_FALSE(intersect_cylinder(cone, Ray{{3.f, 1.5f, 0.f}, 0.f, {-1.f, 0.f, 0.f}}, 0.f, kInf, t, h));
+  EXPECT_FALSE(cylinder_hit(cone, {3.f, -0.5f, 0.f}, {-1.f, 0.f, 0.f}));
+  EXPECT_FALSE(cylinder_hit(cone, {3.f, 1.5f, 0.f}, {-1.f, 0.f, 0.f}));
 }
 
 TEST(Cylinder, NormalsAndBounds) {

@@ -14,14 +14,13 @@ namespace raylab {
 namespace {
 
 RenderCheckpoint saved_render() {
-  RenderSettings s;
-  s.width = 37;
-  s.height = 21;
-  s.spp = 8;
-  s.max_depth = 3;
-  s.seed = 12345678901234ull;
-  s.filter = "tent";
-  s.filter_radius = 1.25f;
+  const RenderSettings s{.width = 37,
+                         .height = 21,
+                         .spp = 8,
+                         .filter = "tent",
+                         .filter_radius = 1.25f,
+                         .max_depth = 3,
+                         .seed = 12345678901234ull};
   return RenderCheckpoint{"scenes/cornell.json", 7, image_settings(s, "jittered", 16, 2, "grid"), {}};
 }
 

@@ -7,12 +7,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <random>
 #include <sstream>
 #include <string>
 
 #include "../test_paths.h"
 #include "io_test_util.h"
+#include "mesh_test_util.h"
 #include "parse_error_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/nff_loader.h"
@@ -20,6 +22,8 @@
 
 namespace raylab {
 namespace {
+
+using test::expect_vec;
 
 namespace fs = std::filesystem;
 
@@ -51,10 +55,14 @@ void expect_error(const std::string& text, int line, int col, const std::string&
   }
 }
 
-void expect_vec(Vec3 got, Vec3 want) {
-  EXPECT_EQ(got.x, want.x);
-  EXPECT_EQ(got.y, want.y);
-  EXPECT_EQ(got.z, want.z);
+// Expects `m` to hold the values of the fill line "f red green blue Kd Ks Shine T index_of_refraction".
+void expect_fill(const Material& m, Vec3 color, float kd, float ks, float shine, float t, float ior) {
+  expect_vec(m.color, color);
+  EXPECT_EQ(m.kd, kd);
+  EXPECT_EQ(m.ks, ks);
+  EXPECT_EQ(m.shininess, shine);
+  EXPECT_EQ(m.transmittance, t);
+  EXPECT_EQ(m.ior, ior);
 }
 
 float triangle_area(const Triangle& t) { return 0.5f * length(triangle_normal(t)); }
@@ -115,13 +123,8 @@ TEST(NffLoader, ReadsEveryEntity) {
   expect_vec(def.color, {1.f, 1.f, 1.f});
   EXPECT_EQ(def.kd, 1.f);
   const Material& m = scene.materials[scene.objects[g.sphere_objects[1]].material];
-  expect_vec(m.color, {0.9f, 0.8f, 0.7f});
-  EXPECT_EQ(m.kd, 0.6f);
-  EXPECT_EQ(m.ks, 0.5f);
+  expect_fill(m, {0.9f, 0.8f, 0.7f}, 0.6f, 0.5f, 30.f, 0.4f, 1.5f);
   EXPECT_EQ(m.reflectivity, 0.5f);
-  EXPECT_EQ(m.shininess, 30.f);
-  EXPECT_EQ(m.transmittance, 0.4f);
-  EXPECT_EQ(m.ior, 1.5f);
   EXPECT_EQ(g.cylinder_objects[0], g.sphere_objects[1]);
   EXPECT_EQ(g.triangle_objects[2], g.sphere_objects[1]);
 }
@@ -210,71 +213,91 @@ TEST(NffLoader, LoadNffReadsTheFileAndReportsPolygons) {
 
 // ---- malformed input, each located exactly ----
 
-TEST(NffLoader, TruncatedPolygonIsUnexpectedEndOfFile) {
-  // Padding in a comment keeps the byte-count check from refusing the count first.
-  expect_error("p 4\n0 0 0\n1 0 0\n1 1 0   # the fourth vertex is missing\n", 5, 1,
-               "unexpected end of file, expected polygon vertex x");
-  expect_error("p 3\n0 0 0  # padding padding\n1 0 0\n1 1", 4, 4, "unexpected end of file, expected polygon vertex z");
-  expect_error("s 1 2 3", 1, 8, "unexpected end of file, expected sphere radius");
-  expect_error(std::string(kView).substr(0, 37), 5, 7, "unexpected end of file, expected view angle");
+// A text that must fail with an InputError at `line`:`col` whose message contains `words`;
+// `rule` names what the text breaks.
+struct Malformed {
+  const char* rule;
+  std::string text;
+  int line, col;
+  const char* words;
+};
+
+// A view entity complete up to its resolution line (line 7).
+const std::string kViewHead = "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n";
+
+const Malformed kMalformed[] = {
+    // A text cut short is an unexpected end of file. Padding in a comment keeps the byte-count
+    // check from refusing the polygon's count first.
+    {"Truncated", "p 4\n0 0 0\n1 0 0\n1 1 0   # the fourth vertex is missing\n", 5, 1,
+     "unexpected end of file, expected polygon vertex x"},
+    {"Truncated", "p 3\n0 0 0  # padding padding\n1 0 0\n1 1", 4, 4,
+     "unexpected end of file, expected polygon vertex z"},
+    {"Truncated", "s 1 2 3", 1, 8, "unexpected end of file, expected sphere radius"},
+    {"Truncated", std::string(kView).substr(0, 37), 5, 7, "unexpected end of file, expected view angle"},
+    // A vertex count the rest of the file cannot hold is refused before reading, as are counts
+    // below 3 and counts that are not integers.
+    {"CountTooLarge", "p 1000000000000\n0 0 0\n1 0 0\n0 1 0\n", 1, 3, "1000000000000"},
+    {"CountTooLarge", "p 1000000000000\n0 0 0\n1 0 0\n0 1 0\n", 1, 3, "more than the rest of the file can hold"},
+    {"CountTooLarge", "s 0 0 0 1\n  pp 99999999999999999999999\n", 2, 6, "99999999999999999999999"},
+    // Four patch vertices need at least 48 bytes; three are there, so the count is refused at
+    // once rather than at the end of the file.
+    {"CountTooLarge", "pp 4\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n", 1, 4, "patch vertex count '4'"},
+    {"CountTooLarge", "p 2\n0 0 0\n1 0 0\n", 1, 3, "p needs at least 3 vertices, found '2'"},
+    {"CountTooLarge", "pp -5\n", 1, 4, "pp needs at least 3 vertices"},
+    {"CountTooLarge", "p three\n", 1, 3, "expected polygon vertex count (an integer), found 'three'"},
+    // Numbers that are not finite in single precision.
+    {"NonFinite", "s 0 nan 0 1\n", 1, 5, "expected sphere centre y (a finite number), found 'nan'"},
+    {"NonFinite", "s 0 0 -inf 1\n", 1, 7, "found '-inf'"},
+    {"NonFinite", "s 0 0 0 INF\n", 1, 9, "sphere radius"},
+    {"NonFinite", "p 3\n0 0 0\n1 0 0\n0 1e39 0\n", 4, 3, "too large for single precision"},
+    {"NonFinite", "pp 3\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 NaN 1\n", 4, 9, "patch normal y"},
+    {"NonFinite", "l 1 2 3 0.5 nan 1\n", 1, 13, "light green"},
+    {"NonFinite", "f 1 1 1 1 0 0 0 1e400\n", 1, 17, "fill index of refraction"},
+    {"NonFinite", "b 0.1 0x10 0.3\n", 1, 7, "background green"},
+    // An unknown entity is named, with the valid ones listed.
+    {"UnknownEntity", "s 0 0 0 1\n  q 1 2 3\n", 2, 3,
+     "unknown entity 'q'; valid entities are v (view), b (background)"},
+    {"UnknownEntity", "s 0 0 0 1\n  q 1 2 3\n", 2, 3, "pp (polygon patch)"},
+    {"UnknownEntity", "P 3\n", 1, 1, "unknown entity 'P'"},
+    // A polygon with more vertices than its count leaves numbers where an entity should be.
+    {"UnknownEntity", "p 3\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n", 5, 1, "more vertices than its count says"},
+    // The view's lines, checked in their order.
+    {"ViewOrder", "v\nfrom 0 0 5\nup 0 1 0\nat 0 0 0\n", 3, 1, "expected 'at'"},
+    {"ViewOrder", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nresolution 10 10\n", 6, 1, "expected 'hither'"},
+    {"ViewOrder", "v\nfrom 0 0 5\nat 0 0 5\nup 0 1 0\n", 3, 1, "'at' point is the same as the 'from' point"},
+    {"ViewOrder", "v\nfrom 0 0 5\nat 0 0 0\nup 0 0 2\n", 4, 1, "parallel to the viewing direction"},
+    {"ViewOrder", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 180\n", 5, 7, "between 0 and 180"},
+    {"ViewOrder", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 0\n", 5, 7, "between 0 and 180"},
+    {"ViewOrder", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither -1\n", 6, 8, "must not be negative"},
+    {"ViewOrder", kViewHead + "resolution 0 512\n", 7, 12, "image width 0 is out of range [1, 65536]"},
+    {"ViewOrder", kViewHead + "resolution 512 70000\n", 7, 16, "image height 70000 is out of range"},
+    {"ViewOrder", kViewHead + "resolution 51.2 512\n", 7, 12, "expected image width (an integer)"},
+    // Radii and colours out of range.
+    {"BadValue", "s 0 0 0 -1\n", 1, 9, "sphere radius must be positive, found '-1'"},
+    {"BadValue", "s 0 0 0 0\n", 1, 9, "sphere radius must be positive"},
+    {"BadValue", "c\n0 0 0 -1\n0 1 0 1\n", 2, 7, "cone base radius must not be negative"},
+    {"BadValue", "c\n0 0 0 1\n0 1 0 -0.5\n", 3, 7, "cone apex radius must not be negative"},
+    {"BadValue", "c\n0 0 0 0\n0 1 0 0\n", 3, 7, "cone radii are both 0"},
+    {"BadValue", "c\n0 0 0 1\n0 0 0 1\n", 3, 1, "cone apex is the same point as its base"},
+    {"BadValue", "l 1 2 3 x\n", 1, 9, "expected light red (a finite number), found 'x'"},
+    {"BadValue", "f 1 -1 1 1 0 0 0 1\n", 1, 5, "fill green must not be negative"},
+    {"BadValue", "b 0 0 -0.5\n", 1, 7, "background blue must not be negative"},
+};
+
+// How gtest names a case in its listings: the text, as a C string literal would spell it.
+void PrintTo(const Malformed& m, std::ostream* os) { *os << ::testing::PrintToString(m.text); }
+
+class NffMalformed : public ::testing::TestWithParam<Malformed> {};
+
+TEST_P(NffMalformed, IsRefusedAtItsLineAndColumn) {
+  const Malformed& m = GetParam();
+  expect_error(m.text, m.line, m.col, m.words);
 }
 
-TEST(NffLoader, PolygonCountBeyondTheFileIsRefusedBeforeReading) {
-  expect_error("p 1000000000000\n0 0 0\n1 0 0\n0 1 0\n", 1, 3, "1000000000000");
-  expect_error("p 1000000000000\n0 0 0\n1 0 0\n0 1 0\n", 1, 3, "more than the rest of the file can hold");
-  expect_error("s 0 0 0 1\n  pp 99999999999999999999999\n", 2, 6, "99999999999999999999999");
-  // Four patch vertices need at least 48 bytes; three are there, so the count is refused at
-  // once rather than at the end of the file.
-  expect_error("pp 4\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n", 1, 4, "patch vertex count '4'");
-  expect_error("p 2\n0 0 0\n1 0 0\n", 1, 3, "p needs at least 3 vertices, found '2'");
-  expect_error("pp -5\n", 1, 4, "pp needs at least 3 vertices");
-  expect_error("p three\n", 1, 3, "expected polygon vertex count (an integer), found 'three'");
-}
-
-TEST(NffLoader, NonFiniteNumbersAreRefused) {
-  expect_error("s 0 nan 0 1\n", 1, 5, "expected sphere centre y (a finite number), found 'nan'");
-  expect_error("s 0 0 -inf 1\n", 1, 7, "found '-inf'");
-  expect_error("s 0 0 0 INF\n", 1, 9, "sphere radius");
-  expect_error("p 3\n0 0 0\n1 0 0\n0 1e39 0\n", 4, 3, "too large for single precision");
-  expect_error("pp 3\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 NaN 1\n", 4, 9, "patch normal y");
-  expect_error("l 1 2 3 0.5 nan 1\n", 1, 13, "light green");
-  expect_error("f 1 1 1 1 0 0 0 1e400\n", 1, 17, "fill index of refraction");
-  expect_error("b 0.1 0x10 0.3\n", 1, 7, "background green");
-}
-
-TEST(NffLoader, UnknownEntityNamesItAndListsTheValidOnes) {
-  expect_error("s 0 0 0 1\n  q 1 2 3\n", 2, 3, "unknown entity 'q'; valid entities are v (view), b (background)");
-  expect_error("s 0 0 0 1\n  q 1 2 3\n", 2, 3, "pp (polygon patch)");
-  expect_error("P 3\n", 1, 1, "unknown entity 'P'");
-  // A polygon with more vertices than its count leaves numbers where an entity should be.
-  expect_error("p 3\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n", 5, 1, "more vertices than its count says");
-}
-
-TEST(NffLoader, ViewLinesAreCheckedInOrder) {
-  expect_error("v\nfrom 0 0 5\nup 0 1 0\nat 0 0 0\n", 3, 1, "expected 'at'");
-  expect_error("v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nresolution 10 10\n", 6, 1, "expected 'hither'");
-  expect_error("v\nfrom 0 0 5\nat 0 0 5\nup 0 1 0\n", 3, 1, "'at' point is the same as the 'from' point");
-  expect_error("v\nfrom 0 0 5\nat 0 0 0\nup 0 0 2\n", 4, 1, "parallel to the viewing direction");
-  expect_error("v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 180\n", 5, 7, "between 0 and 180");
-  expect_error("v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 0\n", 5, 7, "between 0 and 180");
-  expect_error("v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither -1\n", 6, 8, "must not be negative");
-  const std::string head = "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n";
-  expect_error(head + "resolution 0 512\n", 7, 12, "image width 0 is out of range [1, 65536]");
-  expect_error(head + "resolution 512 70000\n", 7, 16, "image height 70000 is out of range");
-  expect_error(head + "resolution 51.2 512\n", 7, 12, "expected image width (an integer)");
-}
-
-TEST(NffLoader, BadRadiiAndColoursAreRefused) {
-  expect_error("s 0 0 0 -1\n", 1, 9, "sphere radius must be positive, found '-1'");
-  expect_error("s 0 0 0 0\n", 1, 9, "sphere radius must be positive");
-  expect_error("c\n0 0 0 -1\n0 1 0 1\n", 2, 7, "cone base radius must not be negative");
-  expect_error("c\n0 0 0 1\n0 1 0 -0.5\n", 3, 7, "cone apex radius must not be negative");
-  expect_error("c\n0 0 0 0\n0 1 0 0\n", 3, 7, "cone radii are both 0");
-  expect_error("c\n0 0 0 1\n0 0 0 1\n", 3, 1, "cone apex is the same point as its base");
-  expect_error("l 1 2 3 x\n", 1, 9, "expected light red (a finite number), found 'x'");
-  expect_error("f 1 -1 1 1 0 0 0 1\n", 1, 5, "fill green must not be negative");
-  expect_error("b 0 0 -0.5\n", 1, 7, "background blue must not be negative");
-}
+INSTANTIATE_TEST_SUITE_P(NffLoader, NffMalformed, ::testing::ValuesIn(kMalformed),
+                         [](const ::testing::TestParamInfo<Malformed>& info) {
+                           return info.param.rule + ("_" + std::to_string(info.index));
+                         });
 
 TEST(NffLoader, GarbageBytesThrowInputErrorNeverCrash) {
   std::mt19937 rng(20240611u);
@@ -429,13 +452,7 @@ TEST(NffLoader, BallsViewLightsAndBackgroundMatchItsFirstLines) {
     expect_vec(l.intensity, {share, share, share});
   }
   ASSERT_FALSE(scene.materials.empty());
-  const Material& first = scene.materials[0];
-  expect_vec(first.color, {1.f, 0.75f, 0.33f});
-  EXPECT_EQ(first.kd, 0.8f);
-  EXPECT_EQ(first.ks, 0.f);
-  EXPECT_EQ(first.shininess, 100000.f);
-  EXPECT_EQ(first.transmittance, 0.f);
-  EXPECT_EQ(first.ior, 1.f);
+  expect_fill(scene.materials[0], {1.f, 0.75f, 0.33f}, 0.8f, 0.f, 100000.f, 0.f, 1.f);
 }
 
 }  // namespace

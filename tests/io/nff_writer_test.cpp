@@ -11,9 +11,11 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "../test_paths.h"
+#include "../test_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/nff_loader.h"
 #include "raylab/io/nff_writer.h"
@@ -75,34 +77,26 @@ void expect_same_scene(const Scene& got, const Scene& want, bool names) {
   expect_same_array(a.disks, b.disks, "disks");
   expect_same_array(a.quads, b.quads, "quads");
   expect_same_array(a.triangle_normals, b.triangle_normals, "triangle normals");
+  const auto objects = [](const Geometry& g) {
+    return std::tie(g.triangle_objects, g.sphere_objects, g.cylinder_objects, g.disk_objects, g.quad_objects);
+  };
   EXPECT_EQ(a.triangle_uvs.size(), b.triangle_uvs.size());
-  EXPECT_EQ(a.triangle_objects, b.triangle_objects);
-  EXPECT_EQ(a.sphere_objects, b.sphere_objects);
-  EXPECT_EQ(a.cylinder_objects, b.cylinder_objects);
-  EXPECT_EQ(a.disk_objects, b.disk_objects);
-  EXPECT_EQ(a.quad_objects, b.quad_objects);
+  EXPECT_EQ(objects(a), objects(b));
 
-  ASSERT_EQ(got.objects.size(), want.objects.size());
-  for (std::size_t i = 0; i < got.objects.size(); ++i) {
-    EXPECT_EQ(got.objects[i].material, want.objects[i].material);
+  test::expect_each(got.objects, want.objects, "object", [names](const SceneObject& x, const SceneObject& y) {
+    EXPECT_EQ(x.material, y.material);
     if (names) {
-      EXPECT_EQ(got.objects[i].name, want.objects[i].name);
+      EXPECT_EQ(x.name, y.name);
     }
-  }
-  ASSERT_EQ(got.materials.size(), want.materials.size());
-  for (std::size_t i = 0; i < got.materials.size(); ++i) {
-    SCOPED_TRACE("material " + std::to_string(i));
-    expect_same_material(got.materials[i], want.materials[i], names);
-  }
-  ASSERT_EQ(got.lights.size(), want.lights.size());
-  for (std::size_t i = 0; i < got.lights.size(); ++i) {
-    const Light& x = got.lights[i];
-    const Light& y = want.lights[i];
+  });
+  test::expect_each(got.materials, want.materials, "material",
+                    [names](const Material& x, const Material& y) { expect_same_material(x, y, names); });
+  test::expect_each(got.lights, want.lights, "light", [](const Light& x, const Light& y) {
     EXPECT_EQ(x.kind, y.kind);
-    EXPECT_TRUE(same_bits(x.position, y.position)) << "light " << i;
-    EXPECT_TRUE(same_bits(x.intensity, y.intensity)) << "light " << i;
+    EXPECT_TRUE(same_bits(x.position, y.position));
+    EXPECT_TRUE(same_bits(x.intensity, y.intensity));
     EXPECT_EQ(x.falloff, y.falloff);
-  }
+  });
   EXPECT_TRUE(same_bits(got.camera.from, want.camera.from));
   EXPECT_TRUE(same_bits(got.camera.at, want.camera.at));
   EXPECT_TRUE(same_bits(got.camera.up, want.camera.up));
@@ -111,14 +105,11 @@ void expect_same_scene(const Scene& got, const Scene& want, bool names) {
   EXPECT_TRUE(same_bits(got.camera.hither, want.camera.hither));
   const RenderSettings& s = got.settings;
   const RenderSettings& t = want.settings;
-  EXPECT_EQ(s.width, t.width);
-  EXPECT_EQ(s.height, t.height);
-  EXPECT_EQ(s.spp, t.spp);
-  EXPECT_EQ(s.sampler, t.sampler);
-  EXPECT_EQ(s.max_depth, t.max_depth);
-  EXPECT_EQ(s.seed, t.seed);
+  const auto exact_settings = [](const RenderSettings& r) {
+    return std::tie(r.width, r.height, r.spp, r.sampler, r.max_depth, r.seed, r.sky_gradient);
+  };
+  EXPECT_EQ(exact_settings(s), exact_settings(t));
   EXPECT_TRUE(same_bits(s.background, t.background));
-  EXPECT_EQ(s.sky_gradient, t.sky_gradient);
   EXPECT_TRUE(same_bits(s.ambient, t.ambient));
 }
 

@@ -8,11 +8,15 @@
 
 #include "../test_paths.h"
 #include "io_test_util.h"
+#include "mesh_test_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/obj_loader.h"
 
 namespace raylab {
 namespace {
+
+using test::expect_triangle;
+using test::expect_vec;
 
 namespace fs = std::filesystem;
 
@@ -50,12 +54,6 @@ class ObjLoader : public ::testing::Test {
 
 constexpr const char* kSquare = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
 
-void expect_vec(Vec3 got, Vec3 want) {
-  EXPECT_EQ(got.x, want.x);
-  EXPECT_EQ(got.y, want.y);
-  EXPECT_EQ(got.z, want.z);
-}
-
 TEST_F(ObjLoader, StanfordBunnyHasAllItsTriangles) {
   const std::string bunny = raylab::test::source_dir() + "/../shared/scenes/stanford-bunny.obj";
   if (!fs::exists(bunny)) GTEST_SKIP() << bunny << " is not present";
@@ -79,12 +77,8 @@ TEST_F(ObjLoader, QuadIsFanTriangulated) {
   ASSERT_EQ(geometry().triangles.size(), 2u);
   const Triangle& t0 = geometry().triangles[0];
   const Triangle& t1 = geometry().triangles[1];
-  expect_vec(t0.p0, {0, 0, 0});
-  expect_vec(t0.p1, {1, 0, 0});
-  expect_vec(t0.p2, {1, 1, 0});
-  expect_vec(t1.p0, {0, 0, 0});
-  expect_vec(t1.p1, {1, 1, 0});
-  expect_vec(t1.p2, {0, 1, 0});
+  expect_triangle(t0, {0, 0, 0}, {1, 0, 0}, {1, 1, 0});
+  expect_triangle(t1, {0, 0, 0}, {1, 1, 0}, {0, 1, 0});
 }
 
 TEST_F(ObjLoader, PolygonOfNCornersGivesNMinusTwoTriangles) {
@@ -103,9 +97,7 @@ TEST_F(ObjLoader, NegativeIndicesAreRelativeToVerticesSoFar) {
   expect_vec(geometry().triangles[0].p2, {0, 1, 0});
   expect_vec(geometry().triangles[1].p0, {5, 5, 5});
   expect_vec(geometry().triangles[1].p2, {5, 6, 5});
-  expect_vec(geometry().triangles[2].p0, {0, 0, 0});
-  expect_vec(geometry().triangles[2].p1, {5, 6, 5});
-  expect_vec(geometry().triangles[2].p2, {6, 5, 5});
+  expect_triangle(geometry().triangles[2], {0, 0, 0}, {5, 6, 5}, {6, 5, 5});
 }
 
 TEST_F(ObjLoader, VertexNormalsAreUsedWhenEveryCornerHasOne) {

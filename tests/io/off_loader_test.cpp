@@ -14,6 +14,7 @@
 
 #include "../test_paths.h"
 #include "io_test_util.h"
+#include "mesh_test_util.h"
 #include "parse_error_util.h"
 #include "raylab/core/error.h"
 #include "raylab/core/rng.h"
@@ -22,19 +23,10 @@
 namespace raylab {
 namespace {
 
+using test::expect_triangle;
+using test::expect_vec;
+
 namespace fs = std::filesystem;
-
-void expect_vec(Vec3 got, Vec3 want) {
-  EXPECT_EQ(got.x, want.x);
-  EXPECT_EQ(got.y, want.y);
-  EXPECT_EQ(got.z, want.z);
-}
-
-void expect_triangle(const Triangle& t, Vec3 p0, Vec3 p1, Vec3 p2) {
-  expect_vec(t.p0, p0);
-  expect_vec(t.p1, p1);
-  expect_vec(t.p2, p2);
-}
 
 std::string error_of(const std::string& text) { return test::parse_error(parse_off, text, "mesh.off"); }
 
@@ -61,18 +53,7 @@ TEST(OffLoader, CommentsPolygonsAndFaceColours) {
       "3 0 1 2\n"
       "4 0 1 2 3 1 0 0\n";  // a quad with a colour
   Geometry g;
-  const MeshLoadReport r = parse_off(text, "c.off", g, 4);
-  EXPECT_EQ(r.vertices, 4u);
-  EXPECT_EQ(r.triangles, 3u);
-  EXPECT_EQ(r.degenerate_dropped, 0u);
-  ASSERT_EQ(g.triangles.size(), 3u);
-  const Vec3 v[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5f}, {0, 1, 0.5f}};
-  expect_triangle(g.triangles[0], v[0], v[1], v[2]);
-  expect_triangle(g.triangles[1], v[0], v[1], v[2]);  // the convex quad is the fan (0 1 2) (0 2 3)
-  expect_triangle(g.triangles[2], v[0], v[2], v[3]);
-  EXPECT_EQ(g.triangle_objects[2], 4u);
-  EXPECT_TRUE(g.triangle_normals.empty());
-  EXPECT_TRUE(g.triangle_uvs.empty());
+  test::expect_triangle_and_quad(parse_off(text, "c.off", g, 4), g, 4);
 }
 
 TEST(OffLoader, HeaderVariations) {

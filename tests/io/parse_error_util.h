@@ -7,21 +7,11 @@
 #include <algorithm>
 #include <string>
 
+#include "../test_util.h"
 #include "raylab/core/error.h"
 #include "raylab/geometry/geometry.h"
 
 namespace raylab::test {
-
-/// The message of the InputError that `call()` throws, or "no error".
-template <class Call>
-std::string thrown_message(Call call) {
-  try {
-    call();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 /// The message of the InputError that `parse(bytes, file, geometry, 0)` throws, or "no error".
 template <class Parse>

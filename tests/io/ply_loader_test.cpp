@@ -21,6 +21,7 @@
 
 #include "../test_paths.h"
 #include "io_test_util.h"
+#include "mesh_test_util.h"
 #include "parse_error_util.h"
 #include "raylab/core/error.h"
 #include "raylab/core/rng.h"
@@ -28,6 +29,9 @@
 
 namespace raylab {
 namespace {
+
+using test::expect_triangle;
+using test::expect_vec;
 
 namespace fs = std::filesystem;
 
@@ -190,12 +194,6 @@ std::string sample(Enc enc, Layout layout, bool normals = true, bool uvs = true)
   return f.str();
 }
 
-void expect_vec(Vec3 got, Vec3 want) {
-  EXPECT_EQ(got.x, want.x);
-  EXPECT_EQ(got.y, want.y);
-  EXPECT_EQ(got.z, want.z);
-}
-
 // Checks that `g` holds exactly the sample mesh's four triangles.
 void expect_sample(const Geometry& g, bool normals, bool uvs) {
   ASSERT_EQ(g.triangles.size(), 4u);
@@ -204,9 +202,7 @@ void expect_sample(const Geometry& g, bool normals, bool uvs) {
   for (int t = 0; t < 4; ++t) {
     SCOPED_TRACE("triangle " + std::to_string(t));
     const int* c = kTriangles[t];
-    expect_vec(g.triangles[t].p0, kP[c[0]]);
-    expect_vec(g.triangles[t].p1, kP[c[1]]);
-    expect_vec(g.triangles[t].p2, kP[c[2]]);
+    expect_triangle(g.triangles[t], kP[c[0]], kP[c[1]], kP[c[2]]);
     for (int k = 0; k < 3; ++k) {
       if (normals) expect_vec(g.triangle_normals[t][k], kN[c[k]]);
       if (uvs) {
@@ -270,22 +266,7 @@ TEST(PlyLoader, HandWrittenAsciiFile) {
       "3 0 1 2\n"
       "4 0 1 2 3\n";
   Geometry g;
-  const MeshLoadReport r = parse_ply(text, "hand.ply", g, 7);
-  EXPECT_EQ(r.vertices, 4u);
-  EXPECT_EQ(r.triangles, 3u);
-  EXPECT_EQ(r.degenerate_dropped, 0u);
-  ASSERT_EQ(g.triangles.size(), 3u);
-  // The quad is convex, so it is the fan (0 1 2) (0 2 3).
-  const Vec3 v[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5f}, {0, 1, 0.5f}};
-  const int want[3][3] = {{0, 1, 2}, {0, 1, 2}, {0, 2, 3}};
-  for (int t = 0; t < 3; ++t) {
-    expect_vec(g.triangles[t].p0, v[want[t][0]]);
-    expect_vec(g.triangles[t].p1, v[want[t][1]]);
-    expect_vec(g.triangles[t].p2, v[want[t][2]]);
-    EXPECT_EQ(g.triangle_objects[t], 7u);
-  }
-  EXPECT_TRUE(g.triangle_normals.empty());
-  EXPECT_TRUE(g.triangle_uvs.empty());
+  test::expect_triangle_and_quad(parse_ply(text, "hand.ply", g, 7), g, 7);
 }
 
 TEST(PlyLoader, EveryEncodingAndLayoutGivesTheSameTriangles) {
@@ -351,9 +332,7 @@ TEST(PlyLoader, EveryScalarTypeAndAlias) {
       Geometry g;
       parse_ply(f.str(), "types.ply", g, 0);
       ASSERT_EQ(g.triangles.size(), 1u);
-      expect_vec(g.triangles[0].p0, v[0]);
-      expect_vec(g.triangles[0].p1, v[1]);
-      expect_vec(g.triangles[0].p2, v[2]);
+      expect_triangle(g.triangles[0], v[0], v[1], v[2]);
     }
   }
 }
@@ -431,9 +410,7 @@ TEST(PlyLoader, TriangleStripsRestartAndAlternateTheirWinding) {
     ASSERT_EQ(g.triangles.size(), 6u);
     for (int t = 0; t < 6; ++t) {
       SCOPED_TRACE("triangle " + std::to_string(t));
-      expect_vec(g.triangles[t].p0, zigzag(want[t][0]));
-      expect_vec(g.triangles[t].p1, zigzag(want[t][1]));
-      expect_vec(g.triangles[t].p2, zigzag(want[t][2]));
+      expect_triangle(g.triangles[t], zigzag(want[t][0]), zigzag(want[t][1]), zigzag(want[t][2]));
       EXPECT_LT(triangle_normal(g.triangles[t]).z, 0.f);
     }
   }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <span>
 
 #include "../test_paths.h"
 #include "raylab/accel/factory.h"
@@ -161,61 +162,59 @@ TEST(SceneJson, SpdGeneratorObjectBringsItsCameraAndLights) {
 
 // Each mistake, the position reported, and the words the message must contain.
 struct BadScene {
-  const char* text;
+  std::string text;
   const char* position;
   const char* words;
 };
 
-TEST(SceneJson, MistakesAreReportedWithLineColumnAndValidChoices) {
-  const BadScene cases[] = {
-      {"{\"version\": 1, \"objcts\": []}",
-       "s.json:1:16:", "unknown key 'objcts' in the scene (valid: $schema, version"},
-      {"{\"version\": 1,\n \"objects\": [\n  {\"type\": \"sphere\", \"material\": \"m\", \"centre\": [0,0,0]}]}",
-       "s.json:3:39:", "unknown key 'centre' in object 0 (valid: type, name, material, center, radius)"},
-      {"{\"version\": 2, \"objects\": []}", "s.json:1:2:", "version 2 is not supported"},
-      {"{\"objects\": []}", "s.json:1:1:", "needs \"version\": 1"},
-      {"{\"version\": 1, \"render\": {\"width\": \"wide\"}, \"objects\": []}",
-       "s.json:1:27:", "'width' must be an integer, found a string"},
-      {"{\"version\": 1, \"render\": {\"spp\": 0}, \"objects\": []}",
-       "s.json:1:27:", "'spp' is 0, must be in [1, 65536]"},
-      {"{\"version\": 1, \"render\": {\"sampler\": \"halton\"}, \"objects\": []}",
-       "s.json:1:27:", "(valid: auto, center, regular, random, jittered, cmj, sobol, adaptive-corners, adaptive)"},
-      {"{\"version\": 1, \"objects\": [{\"type\": \"sphere\", \"material\": \"nope\", \"center\": [0,0,0], \"radius\": "
-       "1}]}",
-       "s.json:1:47:", "unknown material 'nope' (the scene defines no materials)"},
-      {"{\"version\": 1, \"objects\": [{\"type\": \"blob\"}]}", "s.json:1:29:", "'type' is 'blob' (valid: sphere,"},
-      {"{\"version\": 1, \"materials\": {\"m\": {}}, \"objects\": [{\"type\": \"sphere\", \"material\": \"m\", "
-       "\"center\": [0,0], "
-       "\"radius\": 1}]}",
-       "s.json:1:88:", "'center' must be an array of 3 numbers, found an array of 2"},
-      {"{\"version\": 1, \"materials\": {\"m\": {}}, \"objects\": [{\"type\": \"sphere\", \"material\": \"m\", "
-       "\"center\": [0,0,0], "
-       "\"radius\": -1}]}",
-       "s.json:1:107:", "'radius' is -1, must be greater than 0"},
-      {"{\"version\": 1,\n \"objects\": [}", "s.json:2:14:", "JSON"},
-      {"{\"version\": 1, \"version\": 1}", "s.json:1:16:", "duplicate key 'version'"},
-      {"{\"version\": 1, \"objects\": [{\"type\": \"instance\", \"mesh\": \"bunny\"}]}",
-       "s.json:1:49:", "unknown mesh 'bunny'"},
-      {"{\"version\": 1, \"objects\": [{\"type\": \"spd\", \"generator\": \"balls\", \"transform\": {\"scale\": [1, 2, "
-       "1]}}]}",
-       "s.json:1:28:", "non-uniform scale"},
-      {"{\"version\": 1, \"objects\": [{\"type\": \"spd\", \"generator\": \"ballz\"}]}",
-       "s.json:1:28:", "unknown SPD scene 'ballz'"},
-      {"[1, 2]", "s.json:1:1:", "must be an object"},
-      {"", "s.json:1:1:", "JSON"},
-      {"{\"version\": 1, \"objects\": []}", "s.json:1:16:", "no primitives"},
-      // A mesh file whose extension no loader reads (once an uncaught UsageError, found by the fuzzer).
-      {"{\"version\": 1, \"meshes\": {\"t\": {\"file\": \"t.~obj\"}}, \"objects\": []}",
-       "s.json:1:33:", "unsupported format '.~obj'"},
-      {"{\"version\": 1, \"objects\": [{\"type\": \"mesh\", \"file\": \"t.xyz\"}]}",
-       "s.json:1:45:", "unsupported format '.xyz'"},
-  };
+// Expects the scene text of each of `cases` to be refused with its position and words.
+void expect_refused(std::span<const BadScene> cases) {
   for (const BadScene& c : cases) {
     SCOPED_TRACE(c.text);
     const std::string message = error_of(c.text);
     EXPECT_TRUE(message.starts_with(c.position)) << message;
     EXPECT_NE(message.find(c.words), std::string::npos) << message;
   }
+}
+
+TEST(SceneJson, MistakesAreReportedWithLineColumnAndValidChoices) {
+  const BadScene cases[] = {
+      {R"({"version": 1, "objcts": []})", "s.json:1:16:", "unknown key 'objcts' in the scene (valid: $schema, version"},
+      {"{\"version\": 1,\n \"objects\": [\n  {\"type\": \"sphere\", \"material\": \"m\", \"centre\": [0,0,0]}]}",
+       "s.json:3:39:", "unknown key 'centre' in object 0 (valid: type, name, material, center, radius)"},
+      {R"({"version": 2, "objects": []})", "s.json:1:2:", "version 2 is not supported"},
+      {R"({"objects": []})", "s.json:1:1:", "needs \"version\": 1"},
+      {R"({"version": 1, "render": {"width": "wide"}, "objects": []})",
+       "s.json:1:27:", "'width' must be an integer, found a string"},
+      {R"({"version": 1, "render": {"spp": 0}, "objects": []})", "s.json:1:27:", "'spp' is 0, must be in [1, 65536]"},
+      {R"({"version": 1, "render": {"sampler": "halton"}, "objects": []})",
+       "s.json:1:27:", "(valid: auto, center, regular, random, jittered, cmj, sobol, adaptive-corners, adaptive)"},
+      {R"({"version": 1, "objects": [{"type": "sphere", "material": "nope", "center": [0,0,0], "radius": 1}]})",
+       "s.json:1:47:", "unknown material 'nope' (the scene defines no materials)"},
+      {R"({"version": 1, "objects": [{"type": "blob"}]})", "s.json:1:29:", "'type' is 'blob' (valid: sphere,"},
+      {R"({"version": 1, "materials": {"m": {}}, "objects": [{"type": "sphere", "material": "m", )"
+       R"("center": [0,0], "radius": 1}]})",
+       "s.json:1:88:", "'center' must be an array of 3 numbers, found an array of 2"},
+      {R"({"version": 1, "materials": {"m": {}}, "objects": [{"type": "sphere", "material": "m", )"
+       R"("center": [0,0,0], "radius": -1}]})",
+       "s.json:1:107:", "'radius' is -1, must be greater than 0"},
+      {"{\"version\": 1,\n \"objects\": [}", "s.json:2:14:", "JSON"},
+      {R"({"version": 1, "version": 1})", "s.json:1:16:", "duplicate key 'version'"},
+      {R"({"version": 1, "objects": [{"type": "instance", "mesh": "bunny"}]})", "s.json:1:49:", "unknown mesh 'bunny'"},
+      {R"({"version": 1, "objects": [{"type": "spd", "generator": "balls", "transform": {"scale": [1, 2, 1]}}]})",
+       "s.json:1:28:", "non-uniform scale"},
+      {R"({"version": 1, "objects": [{"type": "spd", "generator": "ballz"}]})",
+       "s.json:1:28:", "unknown SPD scene 'ballz'"},
+      {"[1, 2]", "s.json:1:1:", "must be an object"},
+      {"", "s.json:1:1:", "JSON"},
+      {R"({"version": 1, "objects": []})", "s.json:1:16:", "no primitives"},
+      // A mesh file whose extension no loader reads (once an uncaught UsageError, found by the fuzzer).
+      {R"({"version": 1, "meshes": {"t": {"file": "t.~obj"}}, "objects": []})",
+       "s.json:1:33:", "unsupported format '.~obj'"},
+      {R"({"version": 1, "objects": [{"type": "mesh", "file": "t.xyz"}]})",
+       "s.json:1:45:", "unsupported format '.xyz'"},
+  };
+  expect_refused(cases);
 }
 
 // A scene whose camera (text from line 3 on) is `camera`.
@@ -271,40 +270,34 @@ TEST(SceneJson, CameraPathIsReadWithFieldsFromTheCameraObject) {
 }
 
 TEST(SceneJson, CameraPathMistakesAreReportedAtTheirKey) {
-  // Line 3 is `"camera": {"from": [0, 0, 5], "at": [0, 0, 0], "path": {`, with 'path' at column 48.
-  const std::string camera = R"({"from": [0, 0, 5], "at": [0, 0, 0], "path": {)";
-  const struct {
-    std::string path;  // the rest of the path object, from line 4 on
-    const char* position;
-    const char* words;
-  } cases[] = {
-      {"\n \"keys\": [{\"frame\": 10},\n {\"frame\": 10, \"from\": [1, 0, 5]}]}}",
-       "s.json:5:3:", "'frame' is 10, must be greater than the previous key's (10): keys go in increasing frame order"},
-      {"\n \"keys\": [{\"frame\": 0},\n {\"frame\": 20, \"fov_span\": \"edges\"}]}}",
-       "s.json:5:16:", "unknown key 'fov_span' in camera path key 1 (valid: frame, from, at, up, fov, hither)"},
-      {"\n \"interpolation\": \"cubic\",\n \"keys\": [{\"frame\": 0}]}}",
-       "s.json:4:2:", "'interpolation' is 'cubic' (valid: linear, smooth)"},
-      {"\n \"keys\": [{\"frame\": 0},\n {\"frame\": 10, \"from\": [0, 0, 0]}]}}",
-       "s.json:5:2:", "camera path key 1 (frame 10): 'from' and 'at' are the same point"},
-      {"\n \"keys\": [{\"frame\": 0},\n {\"frame\": 3, \"up\": [0, 0, 1]}]}}",
-       "s.json:5:15:", "camera path key 1 (frame 3): 'up' is parallel to the viewing direction"},
-      {"\n \"keys\": [{\"frame\": 0, \"from\": [-1, 0, 0]},\n {\"frame\": 10, \"from\": [1, 0, 0]}]}}",
-       "s.json:3:48:", "camera path: the camera at frame 5 has 'from' and 'at' at the same point"},
-      {"\n \"bogus\": 1, \"keys\": [{\"frame\": 0}]}}",
-       "s.json:4:2:", "unknown key 'bogus' in 'path' (valid: interpolation, keys)"},
-      {"\n \"interpolation\": \"linear\"}}", "s.json:3:48:", "the camera path needs 'keys'"},
-      {"\n \"keys\": []}}", "s.json:4:2:", "'keys' must be an array of 1 or more keys, found an array of 0"},
-      {"\n \"keys\": [\n {\"from\": [1, 0, 5]}]}}", "s.json:5:2:", "camera path key 0 needs 'frame'"},
-      {"\n \"keys\": [{\"frame\": -1}]}}", "s.json:4:12:", "'frame' is -1, must be in [0, 1000000]"},
-      {"\n \"keys\": [{\"frame\": 0.5}]}}", "s.json:4:12:", "'frame' must be an integer, found a number"},
-      {"\n \"keys\": [7]}}", "s.json:4:2:", "camera path key 0 must be an object, found an integer"},
+  // Line 3 is `"camera": {"from": [0, 0, 5], "at": [0, 0, 0], "path": {`, with 'path' at column 48;
+  // each case gives the rest of the path object, from line 4 on.
+  const auto with_path = [](const std::string& path) {
+    return with_camera(R"({"from": [0, 0, 5], "at": [0, 0, 0], "path": {)" + path);
   };
-  for (const auto& c : cases) {
-    SCOPED_TRACE(c.path);
-    const std::string message = error_of(with_camera(camera + c.path));
-    EXPECT_TRUE(message.starts_with(c.position)) << message;
-    EXPECT_NE(message.find(c.words), std::string::npos) << message;
-  }
+  const BadScene cases[] = {
+      {with_path("\n \"keys\": [{\"frame\": 10},\n {\"frame\": 10, \"from\": [1, 0, 5]}]}}"),
+       "s.json:5:3:", "'frame' is 10, must be greater than the previous key's (10): keys go in increasing frame order"},
+      {with_path("\n \"keys\": [{\"frame\": 0},\n {\"frame\": 20, \"fov_span\": \"edges\"}]}}"),
+       "s.json:5:16:", "unknown key 'fov_span' in camera path key 1 (valid: frame, from, at, up, fov, hither)"},
+      {with_path("\n \"interpolation\": \"cubic\",\n \"keys\": [{\"frame\": 0}]}}"),
+       "s.json:4:2:", "'interpolation' is 'cubic' (valid: linear, smooth)"},
+      {with_path("\n \"keys\": [{\"frame\": 0},\n {\"frame\": 10, \"from\": [0, 0, 0]}]}}"),
+       "s.json:5:2:", "camera path key 1 (frame 10): 'from' and 'at' are the same point"},
+      {with_path("\n \"keys\": [{\"frame\": 0},\n {\"frame\": 3, \"up\": [0, 0, 1]}]}}"),
+       "s.json:5:15:", "camera path key 1 (frame 3): 'up' is parallel to the viewing direction"},
+      {with_path("\n \"keys\": [{\"frame\": 0, \"from\": [-1, 0, 0]},\n {\"frame\": 10, \"from\": [1, 0, 0]}]}}"),
+       "s.json:3:48:", "camera path: the camera at frame 5 has 'from' and 'at' at the same point"},
+      {with_path("\n \"bogus\": 1, \"keys\": [{\"frame\": 0}]}}"),
+       "s.json:4:2:", "unknown key 'bogus' in 'path' (valid: interpolation, keys)"},
+      {with_path("\n \"interpolation\": \"linear\"}}"), "s.json:3:48:", "the camera path needs 'keys'"},
+      {with_path("\n \"keys\": []}}"), "s.json:4:2:", "'keys' must be an array of 1 or more keys, found an array of 0"},
+      {with_path("\n \"keys\": [\n {\"from\": [1, 0, 5]}]}}"), "s.json:5:2:", "camera path key 0 needs 'frame'"},
+      {with_path("\n \"keys\": [{\"frame\": -1}]}}"), "s.json:4:12:", "'frame' is -1, must be in [0, 1000000]"},
+      {with_path("\n \"keys\": [{\"frame\": 0.5}]}}"), "s.json:4:12:", "'frame' must be an integer, found a number"},
+      {with_path("\n \"keys\": [7]}}"), "s.json:4:2:", "camera path key 0 must be an object, found an integer"},
+  };
+  expect_refused(cases);
 }
 
 TEST(SceneJson, DeepNestingIsRefusedNotARecursionCrash) {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "io_test_util.h"
+#include "mesh_test_util.h"
 #include "parse_error_util.h"
 #include "raylab/core/error.h"
 #include "raylab/core/rng.h"
@@ -24,13 +25,10 @@
 namespace raylab {
 namespace {
 
-namespace fs = std::filesystem;
+using test::expect_triangle;
+using test::expect_vec;
 
-void expect_vec(Vec3 got, Vec3 want) {
-  EXPECT_EQ(got.x, want.x);
-  EXPECT_EQ(got.y, want.y);
-  EXPECT_EQ(got.z, want.z);
-}
+namespace fs = std::filesystem;
 
 // Two facets of the unit square, the second with a wrong facet normal (which must not matter).
 const std::array<Triangle, 2> kSquare = {Triangle{{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5f}},
@@ -86,9 +84,7 @@ std::string binary(const std::vector<Triangle>& triangles, const std::string& he
 void expect_square(const Geometry& g) {
   ASSERT_EQ(g.triangles.size(), 2u);
   for (int t = 0; t < 2; ++t) {
-    expect_vec(g.triangles[t].p0, kSquare[t].p0);
-    expect_vec(g.triangles[t].p1, kSquare[t].p1);
-    expect_vec(g.triangles[t].p2, kSquare[t].p2);
+    expect_triangle(g.triangles[t], kSquare[t].p0, kSquare[t].p1, kSquare[t].p2);
   }
   EXPECT_TRUE(g.triangle_normals.empty());
   EXPECT_TRUE(g.triangle_uvs.empty());

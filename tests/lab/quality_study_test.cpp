@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../test_util.h"
 #include "raylab/accel/two_level.h"
 #include "raylab/core/error.h"
 #include "raylab/io/image_io.h"
@@ -165,13 +166,9 @@ TEST(QualityStudy, BadOptionsAreUsageErrors) {
   const Film reference(32, 24);
   QualityOptions o = small_options();
   o.samplers = {"jittered", "stratified"};
-  try {
-    run_quality_study(t.scene, *t.accel, reference, o);
-    FAIL();
-  } catch (const UsageError& e) {
-    EXPECT_NE(std::string(e.what()).find("'stratified'"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("adaptive-corners"), std::string::npos) << e.what();
-  }
+  test::expect_contains_all(
+      test::thrown_message<UsageError>([&] { run_quality_study(t.scene, *t.accel, reference, o); }),
+      {"'stratified'", "adaptive-corners"});
   o = small_options();
   o.budgets = {4, 4};
   EXPECT_THROW(validate_quality_options(o), UsageError);

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <memory>
 
 #include "raylab/accel/factory.h"
 #include "raylab/core/error.h"
@@ -23,14 +24,26 @@ bool same_bytes(const std::vector<Ray>& a, const std::vector<Ray>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Ray)) == 0;
 }
 
-// The primary hit behind ray `i` of `kind`, found again with brute force.
-SurfaceInteraction primary_surface(const Scene& scene, const Accelerator& brute, const RaySets& sets, BenchRayKind kind,
-                                   std::size_t i) {
-  Ray ray = sets[BenchRayKind::kPrimary].rays[sets[kind].pixel[i]];
-  Hit hit;
-  EXPECT_TRUE(brute.intersect(ray, hit));
-  return surface_at(scene, ray, hit);
-}
+// The small scene's ray sets made with brute force as the reference, which also finds the
+// primary hit behind a ray again.
+struct BruteRaySets {
+  explicit BruteRaySets(const RaySetOptions& options)
+      : scene(small_scene()),
+        brute(make_accelerator("brute", scene.geometry)),
+        sets(make_ray_sets(scene, *brute, options)) {}
+
+  // The primary hit behind ray `i` of `kind`, found again with brute force.
+  SurfaceInteraction primary_surface(BenchRayKind kind, std::size_t i) const {
+    Ray ray = sets[BenchRayKind::kPrimary].rays[sets[kind].pixel[i]];
+    Hit hit;
+    EXPECT_TRUE(brute->intersect(ray, hit));
+    return surface_at(scene, ray, hit);
+  }
+
+  Scene scene;
+  std::unique_ptr<Accelerator> brute;
+  RaySets sets;
+};
 
 TEST(RaySets, PrimaryRaysPassThroughPixelCentres) {
   Scene scene = small_scene();
@@ -80,12 +93,10 @@ TEST(RaySets, SameRaysWhateverTheThreadsAndTheReference) {
 }
 
 TEST(RaySets, ShadowRaysEndJustShortOfAPointLight) {
-  const Scene scene = small_scene();
-  const auto brute = make_accelerator("brute", scene.geometry);
-  const RaySets sets = make_ray_sets(scene, *brute, {40, 30, 0});
-  const RaySet& shadow = sets[BenchRayKind::kShadow];
+  const BruteRaySets traced({40, 30, 0});
+  const RaySet& shadow = traced.sets[BenchRayKind::kShadow];
   ASSERT_GT(shadow.rays.size(), 100u);
-  const Vec3 light = scene.lights.front().position;
+  const Vec3 light = traced.scene.lights.front().position;
   for (std::size_t i = 0; i < shadow.rays.size(); ++i) {
     const Ray& r = shadow.rays[i];
     const Vec3 end = r.at(r.tmax);
@@ -93,7 +104,7 @@ TEST(RaySets, ShadowRaysEndJustShortOfAPointLight) {
     // tmax is 0.1% short of the light; the ray starts at the primary hit, just off the surface.
     EXPECT_NEAR(length(light - end), to_light * 1e-3f, 1e-3f * to_light + 1e-4f) << i;
     EXPECT_NEAR(dot(normalize(light - r.origin), r.direction), 1.f, 1e-5f) << i;
-    const SurfaceInteraction si = primary_surface(scene, *brute, sets, BenchRayKind::kShadow, i);
+    const SurfaceInteraction si = traced.primary_surface(BenchRayKind::kShadow, i);
     EXPECT_LT(length(r.origin - si.position), 1e-3f) << i;
     EXPECT_GT(dot(si.geometric_normal, r.direction), 0.f) << i;
   }
@@ -146,16 +157,14 @@ TEST(RaySets, ShadowRaysReachAreaLightsAndFollowDirectionalOnes) {
 }
 
 TEST(RaySets, DiffuseRaysAreCosineWeightedOnTheViewersSide) {
-  const Scene scene = small_scene();
-  const auto brute = make_accelerator("brute", scene.geometry);
-  const RaySets sets = make_ray_sets(scene, *brute, {96, 72, 3});
-  const RaySet& diffuse = sets[BenchRayKind::kDiffuse];
+  const BruteRaySets traced({96, 72, 3});
+  const RaySet& diffuse = traced.sets[BenchRayKind::kDiffuse];
   ASSERT_GT(diffuse.rays.size(), 3000u);
   double sum_cos = 0.0;
   for (std::size_t i = 0; i < diffuse.rays.size(); ++i) {
     const Ray& r = diffuse.rays[i];
     EXPECT_NEAR(length(r.direction), 1.f, 1e-5f);
-    const SurfaceInteraction si = primary_surface(scene, *brute, sets, BenchRayKind::kDiffuse, i);
+    const SurfaceInteraction si = traced.primary_surface(BenchRayKind::kDiffuse, i);
     const float c = dot(si.geometric_normal, r.direction);
     EXPECT_GT(c, 0.f) << i;
     sum_cos += c;

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "../test_util.h"
 #include "raylab/core/error.h"
 #include "raylab/render/memory_limit.h"
 #include "raylab/render/settings_override.h"
@@ -53,15 +54,9 @@ TEST(MemoryLimit, OverTheLimitIsRefusedWithTheFigures) {
   e.sums = 2048;
   e.accelerator = 4096;
   EXPECT_NO_THROW(check_memory_limit(e, 8, e.total()));
-  try {
-    check_memory_limit(e, 8, e.total() - 1);
-    FAIL() << "a render over the limit was accepted";
-  } catch (const UsageError& e) {
-    const std::string m = e.what();
-    EXPECT_NE(m.find("this render would need about 7.0 KiB"), std::string::npos) << m;
-    EXPECT_NE(m.find("for 8 primitives; 1000 primary samples"), std::string::npos) << m;
-    EXPECT_NE(m.find("(--max-memory)"), std::string::npos) << m;
-  }
+  test::expect_contains_all(
+      test::thrown_message<UsageError>([&] { check_memory_limit(e, 8, e.total() - 1); }),
+      {"this render would need about 7.0 KiB", "for 8 primitives; 1000 primary samples", "(--max-memory)"});
   EXPECT_GT(default_memory_limit(), 0u);
 }
 

@@ -82,6 +82,17 @@ std::uint32_t object_named(const Scene& scene, std::string_view name) {
   return 0;
 }
 
+// The primitives of `object` among `primitives`, whose objects are `objects` (one per primitive).
+template <class Primitive>
+std::vector<Primitive> parts_of(std::uint32_t object, const std::vector<Primitive>& primitives,
+                                const std::vector<std::uint32_t>& objects) {
+  std::vector<Primitive> parts;
+  for (std::size_t i = 0; i < primitives.size(); ++i) {
+    if (objects[i] == object) parts.push_back(primitives[i]);
+  }
+  return parts;
+}
+
 // Where a ray meets the plane y = `height` (or z = `height` when `axis` is 2).
 Vec3 hit_plane(const Ray& ray, int axis, float height) {
   const float t = (height - ray.origin[axis]) / ray.direction[axis];
@@ -221,11 +232,8 @@ TEST(AaScenes, ZonePlateChartIsCentredAndReachesThreeQuartersOfACyclePerPixel) {
 
 TEST(AaScenes, SiemensStarHas64WedgesOfExactlyHalfAPeriod) {
   const Scene scene = make_aa_lines_scene();
-  const std::uint32_t star = object_named(scene, "siemens star");
-  std::vector<Triangle> wedges;
-  for (std::size_t i = 0; i < scene.geometry.triangles.size(); ++i) {
-    if (scene.geometry.triangle_objects[i] == star) wedges.push_back(scene.geometry.triangles[i]);
-  }
+  const std::vector<Triangle> wedges =
+      parts_of(object_named(scene, "siemens star"), scene.geometry.triangles, scene.geometry.triangle_objects);
   ASSERT_EQ(wedges.size(), 64u);
   const Vec3 centre = aa_pixel_to_world(kAaStarCenter.x, kAaStarCenter.y);
   const double wedge = 2.0 * kPi / 128.0;
@@ -252,11 +260,8 @@ TEST(AaScenes, SiemensStarHas64WedgesOfExactlyHalfAPeriod) {
 
 TEST(AaScenes, ThinLinesSpanTheWidthsAndDirections) {
   const Scene scene = make_aa_lines_scene();
-  const std::uint32_t lines = object_named(scene, "thin lines");
-  std::vector<Quad> quads;
-  for (std::size_t i = 0; i < scene.geometry.quads.size(); ++i) {
-    if (scene.geometry.quad_objects[i] == lines) quads.push_back(scene.geometry.quads[i]);
-  }
+  const std::vector<Quad> quads =
+      parts_of(object_named(scene, "thin lines"), scene.geometry.quads, scene.geometry.quad_objects);
   ASSERT_EQ(quads.size(), 25u);
   float min_width = 1e9f, max_width = 0.f;
   std::vector<double> directions;

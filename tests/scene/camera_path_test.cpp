@@ -38,13 +38,7 @@ void expect_near(Vec3 got, Vec3 want, float tolerance) {
 }
 
 CameraSpec camera(Vec3 from, Vec3 at, Vec3 up = {0.f, 1.f, 0.f}, float fov = 45.f, float hither = 0.f) {
-  CameraSpec c;
-  c.from = from;
-  c.at = at;
-  c.up = up;
-  c.vfov_degrees = fov;
-  c.hither = hither;
-  return c;
+  return {.from = from, .at = at, .up = up, .vfov_degrees = fov, .hither = hither};
 }
 
 // Four unevenly spaced keys on a curve, with values that do not round nicely.

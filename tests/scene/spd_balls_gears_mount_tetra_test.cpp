@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "../test_paths.h"
+#include "../test_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/nff_loader.h"
 #include "raylab/scene/spd.h"
@@ -107,16 +108,11 @@ void expect_same_scene(const Scene& generated, const Scene& reference) {
   EXPECT_EQ(g.quads.size(), r.quads.size());
   deviation.record();
 
-  ASSERT_EQ(generated.objects.size(), reference.objects.size());
-  for (std::size_t i = 0; i < generated.objects.size(); ++i) {
-    EXPECT_EQ(generated.objects[i].name, reference.objects[i].name) << "object " << i;
-    EXPECT_EQ(generated.objects[i].material, reference.objects[i].material) << "object " << i;
-  }
-  ASSERT_EQ(generated.materials.size(), reference.materials.size());
-  for (std::size_t i = 0; i < generated.materials.size(); ++i) {
-    const Material& a = generated.materials[i];
-    const Material& b = reference.materials[i];
-    SCOPED_TRACE("material " + std::to_string(i));
+  test::expect_each(generated.objects, reference.objects, "object", [](const SceneObject& a, const SceneObject& b) {
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.material, b.material);
+  });
+  test::expect_each(generated.materials, reference.materials, "material", [](const Material& a, const Material& b) {
     EXPECT_EQ(a.name, b.name);
     EXPECT_TRUE(close(a.color, b.color)) << str(a.color) << " vs " << str(b.color);
     EXPECT_TRUE(close(a.kd, b.kd)) << a.kd << " vs " << b.kd;
@@ -126,18 +122,13 @@ void expect_same_scene(const Scene& generated, const Scene& reference) {
     EXPECT_TRUE(close(a.transmittance, b.transmittance)) << a.transmittance << " vs " << b.transmittance;
     EXPECT_TRUE(close(a.ior, b.ior)) << a.ior << " vs " << b.ior;
     EXPECT_EQ(a.fresnel, b.fresnel);
-  }
-
-  ASSERT_EQ(generated.lights.size(), reference.lights.size());
-  for (std::size_t i = 0; i < generated.lights.size(); ++i) {
-    const Light& a = generated.lights[i];
-    const Light& b = reference.lights[i];
-    SCOPED_TRACE("light " + std::to_string(i));
+  });
+  test::expect_each(generated.lights, reference.lights, "light", [](const Light& a, const Light& b) {
     EXPECT_EQ(a.kind, b.kind);
     EXPECT_TRUE(close(a.position, b.position)) << str(a.position) << " vs " << str(b.position);
     EXPECT_TRUE(close(a.intensity, b.intensity)) << str(a.intensity) << " vs " << str(b.intensity);
     EXPECT_EQ(a.falloff, b.falloff);
-  }
+  });
 
   const CameraSpec& ca = generated.camera;
   const CameraSpec& cb = reference.camera;

@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -21,55 +20,13 @@
 #include "raylab/simd/double4.h"
 #include "raylab/simd/float4.h"
 #include "raylab/simd/wide_float.h"
+#include "simd_test_util.h"
 
 namespace raylab {
 namespace {
 
 namespace sc = simd::scalar;
-
-std::uint32_t bits(float x) { return std::bit_cast<std::uint32_t>(x); }
-float from_bits(std::uint32_t b) { return std::bit_cast<float>(b); }
-
-// Bit for bit, except that of two NaN results only NaN-ness is compared: which NaN an arithmetic
-// operation on two NaNs returns is not specified by C++ (the compiler may commute a * b).
-bool same_arith(float a, float b) { return std::isnan(a) ? std::isnan(b) : bits(a) == bits(b); }
-
-// The documented rules, written out for one lane.
-float rule_min(float a, float b) { return std::isnan(a) || std::isnan(b) ? b : (a < b ? a : b); }
-float rule_max(float a, float b) { return std::isnan(a) || std::isnan(b) ? b : (a > b ? a : b); }
-
-const std::vector<float>& special_values() {
-  static const std::vector<float> v = {
-      0.f,
-      -0.f,
-      std::numeric_limits<float>::infinity(),
-      -std::numeric_limits<float>::infinity(),
-      std::numeric_limits<float>::quiet_NaN(),
-      -std::numeric_limits<float>::quiet_NaN(),
-      from_bits(0x7fc12345u),  // quiet NaN with a payload
-      from_bits(0xffd00001u),  // negative quiet NaN with a payload
-      from_bits(0x7f800001u),  // signaling NaN
-      std::numeric_limits<float>::denorm_min(),
-      -std::numeric_limits<float>::denorm_min(),
-      from_bits(0x007fffffu),  // largest denormal
-      std::numeric_limits<float>::min(),
-      std::numeric_limits<float>::max(),
-      -std::numeric_limits<float>::max(),
-      1.f,
-      -1.f,
-      3.f,
-      1e-30f,
-      -1e30f,
-  };
-  return v;
-}
-
-float random_value(Pcg32& rng) {
-  const std::uint32_t kind = rng.next_u32() % 3;
-  if (kind == 0) return special_values()[rng.next_u32() % special_values().size()];
-  if (kind == 1) return from_bits(rng.next_u32());  // any bit pattern: NaNs, denormals, huge
-  return (rng.next_float() - 0.5f) * 200.f;
-}
+using namespace test;  // simd_test_util.h
 
 template <int W>
 using Lanes = std::array<float, W>;
