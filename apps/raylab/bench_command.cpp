@@ -1,5 +1,5 @@
 // `raylab bench`: argument parsing, file reading and writing, printing; the measuring is in the
-// library (render/bench.h), the ray and hit files in io/ray_file.h.
+// library (lab/bench.h), the ray and hit files in io/ray_file.h.
 
 #include <fmt/core.h>
 

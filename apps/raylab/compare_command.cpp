@@ -1,5 +1,5 @@
 // `raylab compare`: argument parsing and printing only; the measuring is in the library
-// (render/accel_compare.h), the heat maps and the chart in io/.
+// (lab/accel_compare.h), its heat maps and chart in lab/compare_charts.h.
 
 #include <fmt/core.h>
 

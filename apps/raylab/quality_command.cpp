@@ -1,5 +1,6 @@
 // `raylab quality`: argument parsing and printing only; the study is in the library
-// (render/quality_study.h), the reference cache and the chart in io/.
+// (lab/quality_study.h), the reference cache and the chart in lab/quality_reference.h and
+// lab/quality_chart.h.
 
 #include <fmt/core.h>
 #include <unistd.h>
