@@ -150,263 +150,204 @@ struct PacketStackEntry {
   std::uint32_t rays;
 };
 
-/// One packet's walk through a wide BVH: the rays' state lane by lane, and the steps of the walk
-/// (which rays enter a child, testing a leaf, finishing a subtree one ray at a time, pushing the
-/// children). For rays of direction octant kOctant; kAnyHit asks for any hit.
-template <int W, bool kAnyHit, int kOctant>
-class PacketWalk {
- public:
-  /// The state of `rays[0..n)` (n <= kPacketSize) with their closest hits so far in `hits`
-  /// (ignored for any-hit queries).
-  PacketWalk(const WideBvhTree<W>& tree, const Geometry& geometry, const Ray* rays, const Hit* hits, int n)
-      : m_tree(tree), m_geometry(geometry), m_rays(rays), m_n(n) {
-    load_lanes(hits);
-    m_interval = packet_interval<W, kOctant>(m_origin, m_inv, m_tmin_lo);
-    m_coherent = !kAnyHit && m_interval.valid && directions_coherent(rays, n);
-    // Rays that share the watertight test's axis permutation can be tested ray-parallel.
-    for (int i = 1; i < n; ++i) {
-      m_same_axes = m_same_axes && m_tri_rays[i].kx == m_tri_rays[0].kx && m_tri_rays[i].ky == m_tri_rays[0].ky &&
-                    m_tri_rays[i].kz == m_tri_rays[0].kz;
-    }
-    if (m_same_axes) {
-      for (int g = 0; g < kGroups; ++g) m_group_rays[g] = watertight_rays<kRayLanes>(m_tri_rays + g * kRayLanes);
-    }
-  }
+}  // namespace
 
-  /// Walks the tree, nearest subtree first, each with the mask of rays that entered it.
-  void run() {
-    PacketStackEntry stack[kWideStackSize<W>];
-    int size = 0;
-    PacketStackEntry current{{0, 0, m_tmin_lo}, m_alive};
-    for (;;) {
-      std::uint32_t active = current.rays & m_alive;
-      if constexpr (!kAnyHit) active &= rays_before_closest_hit(current.node.t);
-      if (active != 0 && std::popcount(active) <= kSingleRayThreshold) {
-        walk_singly(current.node, active);
-      } else if (active != 0 && current.node.count != 0) {
-        test_leaf(current.node.child, current.node.count, active);
-      } else if (active != 0) {
-        push_children(m_tree.nodes[current.node.child], active, stack, size);
-      }
-      if (size == 0) break;
-      current = stack[--size];
-    }
-  }
-
-  /// Hands the results back: closest hits into `rays[i].tmax` and `hits[i]`, or whether each
-  /// ray is occluded into `occluded_out[i]`.
-  void write_results(Ray* rays, Hit* hits, std::uint8_t* occluded_out) const {
-    for (int i = 0; i < m_n; ++i) {
-      if constexpr (kAnyHit) {
-        occluded_out[i] = (m_found >> i) & 1u;
-      } else if ((m_found >> i) & 1u) {
-        rays[i].tmax = m_tmax[i];
-        hits[i] = m_best[i];
-      }
-    }
-  }
-
- private:
+template <int W>
+template <bool kAnyHit, int kOctant>
+void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occluded_out, int n) const {
   using L = simd::WideFloat<kRayLanes>;
-  static constexpr int kGroups = kPacketSize / kRayLanes;
-  static constexpr std::uint32_t kGroupMask = (1u << kRayLanes) - 1u;
-  static constexpr int kNear[3] = {(kOctant & 1) ? 1 : 0, (kOctant & 2) ? 1 : 0, (kOctant & 4) ? 1 : 0};
-
-  // Fills the lanes from the rays: structure of arrays for the box tests across rays (unused
-  // lanes copy ray 0 and stay inactive), per ray for the single-ray leaf tests.
-  void load_lanes(const Hit* hits) {
-    for (int i = 0; i < kPacketSize; ++i) {
-      const Ray& r = m_rays[i < m_n ? i : 0];
-      for (int a = 0; a < 3; ++a) {
-        m_origin[a][i] = r.origin[a];
-        m_inv[a][i] = 1.f / r.direction[a];  // exactly as the single-ray box test computes it
-      }
-      m_tmin[i] = r.tmin;
-      m_tmax[i] = r.tmax;
-      m_tri_rays[i] = i < m_n ? WatertightRay(r) : m_tri_rays[0];
-      if (i >= m_n) continue;
-      m_best[i] = kAnyHit ? Hit{} : hits[i];
-      m_tmin_lo = std::min(m_tmin_lo, r.tmin);
-      // A ray with an empty or NaN interval takes no part (the single-ray walk would find nothing).
-      if (r.tmin <= r.tmax) m_alive |= 1u << i;
+  constexpr int kGroups = kPacketSize / kRayLanes;
+  constexpr std::uint32_t kGroupMask = (1u << kRayLanes) - 1u;
+  constexpr int kNear[3] = {(kOctant & 1) ? 1 : 0, (kOctant & 2) ? 1 : 0, (kOctant & 4) ? 1 : 0};
+  // Per-lane state, as structure of arrays for the box tests across rays (unused lanes copy
+  // ray 0 and stay inactive), and per ray for the single-ray leaf tests.
+  alignas(64) float origin[3][kPacketSize], inv[3][kPacketSize], tmin[kPacketSize], tmax[kPacketSize];
+  WatertightRay tri_rays[kPacketSize];
+  Hit best[kPacketSize];
+  float tmin_lo = INFINITY;
+  std::uint32_t found = 0, alive = 0;
+  for (int i = 0; i < kPacketSize; ++i) {
+    const Ray& r = rays[i < n ? i : 0];
+    for (int a = 0; a < 3; ++a) {
+      origin[a][i] = r.origin[a];
+      inv[a][i] = 1.f / r.direction[a];  // exactly as the single-ray box test computes it
     }
+    tmin[i] = r.tmin;
+    tmax[i] = r.tmax;
+    tri_rays[i] = i < n ? WatertightRay(r) : tri_rays[0];
+    if (i >= n) continue;
+    best[i] = kAnyHit ? Hit{} : hits[i];
+    tmin_lo = std::min(tmin_lo, r.tmin);
+    // A ray with an empty or NaN interval takes no part (the single-ray walk would find nothing).
+    if (r.tmin <= r.tmax) alive |= 1u << i;
   }
-
-  // Ray i found a hit: an any-hit ray is done.
-  void record_hit(int i) {
-    m_found |= 1u << i;
-    if constexpr (kAnyHit) m_alive &= ~(1u << i);
+  const PacketInterval<W> interval = packet_interval<W, kOctant>(origin, inv, tmin_lo);
+  const bool coherent = !kAnyHit && interval.valid && directions_coherent(rays, n);
+  // Rays that share the watertight test's axis permutation can be tested ray-parallel.
+  bool same_axes = true;
+  for (int i = 1; i < n; ++i) {
+    same_axes = same_axes && tri_rays[i].kx == tri_rays[0].kx && tri_rays[i].ky == tri_rays[0].ky &&
+                tri_rays[i].kz == tri_rays[0].kz;
   }
-
-  // The rays whose closest hit so far is not nearer than a subtree entered at `t_enter`: the
-  // others leave it.
-  std::uint32_t rays_before_closest_hit(float t_enter) const {
-    std::uint32_t still = 0;
-    for (int g = 0; g < kGroups; ++g) {
-      still |= static_cast<std::uint32_t>(
-                   less_equal_mask(L::broadcast(t_enter), L::load(m_tmax + g * kRayLanes) * L::broadcast(kSlabWiden)))
-               << (g * kRayLanes);
-    }
-    return still;
+  WatertightRays<kRayLanes> group_rays[kGroups];
+  if (same_axes) {
+    for (int g = 0; g < kGroups; ++g) group_rays[g] = watertight_rays<kRayLanes>(tri_rays + g * kRayLanes);
   }
 
   // Bit mask of the lanes of group g that enter child c of `node` within their own
-  // [tmin, tmax]: the single-ray box test, lane by lane, with the same operations. Stores their
-  // entry distances in `t_enter` unless it is null.
-  std::uint32_t lanes_entering(const WideBvhNode<W>& node, int c, int g, float* t_enter) const {
+  // [tmin, tmax]: the single-ray box test, lane by lane, with the same operations.
+  auto lanes_entering = [&](const WideBvhNode<W>& node, int c, int g, float* t_enter) {
     const int o = g * kRayLanes;
-    L t_near = L::load(m_tmin + o);
+    L t_near = L::load(tmin + o);
     L t_far = L::broadcast(INFINITY);
     for (int a = 0; a < 3; ++a) {
-      const L o_a = L::load(m_origin[a] + o), i_a = L::load(m_inv[a] + o);
+      const L o_a = L::load(origin[a] + o), i_a = L::load(inv[a] + o);
       const L t0 = (L::broadcast(kNear[a] ? node.hi[a][c] : node.lo[a][c]) - o_a) * i_a;
       const L t1 = (L::broadcast(kNear[a] ? node.lo[a][c] : node.hi[a][c]) - o_a) * i_a;
       t_near = max(t0, t_near);
       t_far = min(t1, t_far);
     }
-    t_far = min(t_far, L::load(m_tmax + o)) * L::broadcast(kSlabWiden);
+    t_far = min(t_far, L::load(tmax + o)) * L::broadcast(kSlabWiden);
     if (t_enter != nullptr) t_near.store(t_enter);
     return static_cast<std::uint32_t>(less_equal_mask(t_near, t_far)) << o;
-  }
+  };
 
-  // Finishes subtree `node` for each ray of `active` with the single-ray walk.
-  void walk_singly(const WideStackEntry& node, std::uint32_t active) {
-    for (std::uint32_t m = active; m != 0; m &= m - 1) {
-      const int i = std::countr_zero(m);
-      const Ray& r = m_rays[i];
-      if (walk_wide_bvh<kAnyHit, false, W>(m_tree, m_geometry, node, WideBoxRay<W>(r), m_tri_rays[i], r, m_tmax[i],
-                                           m_best[i], m_unused_counters)) {
-        record_hit(i);
-      }
-    }
-  }
+  TraversalCounters unused_counters;  // packets are never counted (kCount = false)
+
+  // Ray i found a hit: an any-hit ray is done.
+  auto record_hit = [&](int i) {
+    found |= 1u << i;
+    if constexpr (kAnyHit) alive &= ~(1u << i);
+  };
 
   // The leaf (first, count_flags) for the rays in `active`: ray-parallel for the groups with
   // enough rays sharing the axis permutation, ray by ray for the others.
-  void test_leaf(std::uint32_t first, std::uint32_t count_flags, std::uint32_t active) {
+  auto test_leaf = [&](std::uint32_t first, std::uint32_t count_flags, std::uint32_t active) {
     std::uint32_t parallel = 0;
-    if (m_same_axes) {
+    if (same_axes) {
       for (int g = 0; g < kGroups; ++g) {
         const std::uint32_t m = (active >> (g * kRayLanes)) & kGroupMask;
         if (std::popcount(m) >= kRayParallelLeaf) parallel |= m << (g * kRayLanes);
       }
     }
-    if (parallel != 0) test_leaf_triangles_ray_parallel(first, count_flags, parallel);
-    for (std::uint32_t m = active & ~parallel; m != 0; m &= m - 1) {
-      const int i = std::countr_zero(m);
-      if (intersect_wide_leaf_triangles<kAnyHit, false, W>(m_tree.leaves, first, count_flags, m_tri_rays[i], m_tmin[i],
-                                                           m_tmax[i], m_best[i], m_unused_counters)) {
-        record_hit(i);
-      }
-    }
-    if (!leaf_has_others<W>(count_flags)) return;
-    for (std::uint32_t m = active & m_alive; m != 0; m &= m - 1) {
-      const int i = std::countr_zero(m);
-      if (intersect_wide_leaf_others<kAnyHit, false, W>(m_tree.leaves, m_geometry, first, count_flags, m_tri_rays[i],
-                                                        m_rays[i], m_tmin[i], m_tmax[i], m_best[i],
-                                                        m_unused_counters)) {
-        record_hit(i);
-      }
-    }
-  }
-
-  // The leaf's triangles for the rays in `parallel`, each triangle against a whole group of
-  // rays at once.
-  void test_leaf_triangles_ray_parallel(std::uint32_t first, std::uint32_t count_flags, std::uint32_t parallel) {
     const std::uint32_t triangle_count = m_tree.leaves.triangle_count;
-    for (std::uint32_t b = first; b < first + leaf_block_count<W>(count_flags); ++b) {
+    for (std::uint32_t b = first; parallel != 0 && b < first + leaf_block_count<W>(count_flags); ++b) {
       const TriangleBlock4& block = m_tree.leaves.blocks[b];
       for (int lane = 0; lane < 4; ++lane) {
         const std::uint32_t id = block.id[lane];
         if (id >= triangle_count) continue;  // unused
         for (int g = 0; g < kGroups; ++g) {
           const int o = g * kRayLanes;
-          if (((parallel & m_alive) >> o & kGroupMask) == 0) continue;
+          if (((parallel & alive) >> o & kGroupMask) == 0) continue;
           alignas(64) float t[kRayLanes], u[kRayLanes], v[kRayLanes];
-          std::uint32_t hit = intersect_triangle_rays<kRayLanes>(block, lane, m_group_rays[g], L::load(m_tmin + o),
-                                                                 L::load(m_tmax + o), t, u, v);
+          std::uint32_t hit = intersect_triangle_rays<kRayLanes>(block, lane, group_rays[g], L::load(tmin + o),
+                                                                 L::load(tmax + o), t, u, v);
           // Each candidate kept under the exact closest-hit rule (lower id on ties), as the
           // single-ray leaf test keeps it; an any-hit ray stops at its first.
-          for (hit &= (parallel & m_alive) >> o; hit != 0; hit &= hit - 1) {
+          for (hit &= (parallel & alive) >> o; hit != 0; hit &= hit - 1) {
             const int i = o + std::countr_zero(hit);
             const int j = i - o;
-            if (!(t[j] < m_best[i].tie_limit(id, m_tmax[i]))) continue;
-            m_tmax[i] = t[j];
-            m_best[i] = {t[j], id, u[j], v[j]};
+            if (!(t[j] < best[i].tie_limit(id, tmax[i]))) continue;
+            tmax[i] = t[j];
+            best[i] = {t[j], id, u[j], v[j]};
             record_hit(i);
           }
         }
       }
     }
-  }
-
-  // Pushes the children of `node` that some ray of `active` enters, each with the mask of those
-  // rays; for closest hits the farthest goes first, so the nearest is visited next.
-  void push_children(const WideBvhNode<W>& node, std::uint32_t active, PacketStackEntry* stack, int& size) const {
-    alignas(64) float order_t[W];
-    unsigned candidates = WideBoxRay<W>::occupied_slots(node);
-    if (m_interval.valid) {
-      float packet_tmax = 0.f;
-      for (std::uint32_t m = active; m != 0; m &= m - 1)
-        packet_tmax = std::max(packet_tmax, m_tmax[std::countr_zero(m)]);
-      candidates &= m_interval.template test<kOctant>(node, m_tmin_lo, packet_tmax, order_t);
-    }
-    const int base = size;
-    for (; candidates != 0; candidates &= candidates - 1) {
-      const int c = std::countr_zero(candidates);
-      std::uint32_t entering = 0;
-      if (m_coherent && node.count[c] == 0) {
-        // A coherent packet enters interior children together on the interval test alone;
-        // rays are culled one by one only before a leaf, where testing costs most.
-        entering = active;
-      } else if (m_interval.valid) {
-        for (int g = 0; g < kGroups; ++g) entering |= lanes_entering(node, c, g, nullptr);
-        entering &= active;
-      } else {
-        // No interval bound to order by: the nearest entry of the lanes that enter.
-        alignas(64) float t_enter[kPacketSize];
-        for (int g = 0; g < kGroups; ++g) entering |= lanes_entering(node, c, g, t_enter + g * kRayLanes);
-        entering &= active;
-        order_t[c] = INFINITY;
-        for (std::uint32_t m = entering; m != 0; m &= m - 1)
-          order_t[c] = std::min(order_t[c], t_enter[std::countr_zero(m)]);
+    for (std::uint32_t m = active & ~parallel; m != 0; m &= m - 1) {
+      const int i = std::countr_zero(m);
+      if (intersect_wide_leaf_triangles<kAnyHit, false, W>(m_tree.leaves, first, count_flags, tri_rays[i], tmin[i],
+                                                           tmax[i], best[i], unused_counters)) {
+        record_hit(i);
       }
-      if (entering == 0) continue;
-      const PacketStackEntry e{{node.child[c], node.count[c], order_t[c]}, entering};
-      int b = size++;
-      for (; b > base && !kAnyHit && stack[b - 1].node.t < e.node.t; --b) stack[b] = stack[b - 1];
-      stack[b] = e;
     }
+    if (!leaf_has_others<W>(count_flags)) return;
+    for (std::uint32_t m = active & alive; m != 0; m &= m - 1) {
+      const int i = std::countr_zero(m);
+      if (intersect_wide_leaf_others<kAnyHit, false, W>(m_tree.leaves, m_geometry, first, count_flags, tri_rays[i],
+                                                        rays[i], tmin[i], tmax[i], best[i], unused_counters)) {
+        record_hit(i);
+      }
+    }
+  };
+
+  PacketStackEntry stack[kWideStackSize<W>];
+  int size = 0;
+  PacketStackEntry current{{0, 0, tmin_lo}, alive};
+  for (;;) {
+    std::uint32_t active = current.rays & alive;
+    // Rays whose closest hit is already nearer than the subtree's entry leave it.
+    if constexpr (!kAnyHit) {
+      std::uint32_t still = 0;
+      for (int g = 0; g < kGroups; ++g) {
+        still |= static_cast<std::uint32_t>(less_equal_mask(L::broadcast(current.node.t),
+                                                            L::load(tmax + g * kRayLanes) * L::broadcast(kSlabWiden)))
+                 << (g * kRayLanes);
+      }
+      active &= still;
+    }
+    if (active != 0 && std::popcount(active) <= kSingleRayThreshold) {
+      for (std::uint32_t m = active; m != 0; m &= m - 1) {
+        const int i = std::countr_zero(m);
+        Ray& r = rays[i];
+        if (walk_wide_bvh<kAnyHit, false, W>(m_tree, m_geometry, current.node, WideBoxRay<W>(r), tri_rays[i], r,
+                                             tmax[i], best[i], unused_counters)) {
+          record_hit(i);
+        }
+      }
+    } else if (active != 0 && current.node.count != 0) {
+      test_leaf(current.node.child, current.node.count, active);
+    } else if (active != 0) {
+      const WideBvhNode<W>& node = m_tree.nodes[current.node.child];
+      alignas(64) float order_t[W];
+      unsigned candidates = WideBoxRay<W>::occupied_slots(node);
+      if (interval.valid) {
+        float packet_tmax = 0.f;
+        for (std::uint32_t m = active; m != 0; m &= m - 1)
+          packet_tmax = std::max(packet_tmax, tmax[std::countr_zero(m)]);
+        candidates &= interval.template test<kOctant>(node, tmin_lo, packet_tmax, order_t);
+      }
+      const int base = size;
+      for (; candidates != 0; candidates &= candidates - 1) {
+        const int c = std::countr_zero(candidates);
+        std::uint32_t entering = 0;
+        if (coherent && node.count[c] == 0) {
+          // A coherent packet enters interior children together on the interval test alone;
+          // rays are culled one by one only before a leaf, where testing costs most.
+          entering = active;
+        } else if (interval.valid) {
+          for (int g = 0; g < kGroups; ++g) entering |= lanes_entering(node, c, g, nullptr);
+          entering &= active;
+        } else {
+          // No interval bound to order by: the nearest entry of the lanes that enter.
+          alignas(64) float t_enter[kPacketSize];
+          for (int g = 0; g < kGroups; ++g) entering |= lanes_entering(node, c, g, t_enter + g * kRayLanes);
+          entering &= active;
+          order_t[c] = INFINITY;
+          for (std::uint32_t m = entering; m != 0; m &= m - 1)
+            order_t[c] = std::min(order_t[c], t_enter[std::countr_zero(m)]);
+        }
+        if (entering == 0) continue;
+        // Push farthest first (closest hits), so the nearest is visited next.
+        const PacketStackEntry e{{node.child[c], node.count[c], order_t[c]}, entering};
+        int b = size++;
+        for (; b > base && !kAnyHit && stack[b - 1].node.t < e.node.t; --b) stack[b] = stack[b - 1];
+        stack[b] = e;
+      }
+    }
+    if (size == 0) break;
+    current = stack[--size];
   }
 
-  const WideBvhTree<W>& m_tree;
-  const Geometry& m_geometry;
-  const Ray* m_rays;
-  int m_n;
-  alignas(64) float m_origin[3][kPacketSize];
-  alignas(64) float m_inv[3][kPacketSize];
-  alignas(64) float m_tmin[kPacketSize];
-  alignas(64) float m_tmax[kPacketSize];
-  WatertightRay m_tri_rays[kPacketSize];
-  Hit m_best[kPacketSize];
-  WatertightRays<kRayLanes> m_group_rays[kGroups];
-  float m_tmin_lo = INFINITY;
-  std::uint32_t m_found = 0;  // rays that found a hit (bit i: ray i)
-  std::uint32_t m_alive = 0;  // rays still walking
-  PacketInterval<W> m_interval;
-  bool m_coherent = false;
-  bool m_same_axes = true;
-  TraversalCounters m_unused_counters;  // packets are never counted (kCount = false)
-};
-
-}  // namespace
-
-template <int W>
-template <bool kAnyHit, int kOctant>
-void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occluded_out, int n) const {
-  PacketWalk<W, kAnyHit, kOctant> walk(m_tree, m_geometry, rays, hits, n);
-  walk.run();
-  walk.write_results(rays, hits, occluded_out);
+  for (int i = 0; i < n; ++i) {
+    if constexpr (kAnyHit) {
+      occluded_out[i] = (found >> i) & 1u;
+    } else if ((found >> i) & 1u) {
+      rays[i].tmax = tmax[i];
+      hits[i] = best[i];
+    }
+  }
 }
 
 template <int W>

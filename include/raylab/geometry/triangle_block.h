@@ -103,11 +103,8 @@ inline Mask finish_watertight(Mask lanes, const F& e0, const F& e1, const F& e2,
 /// `t < tie_limit` rule lane by lane), and their t, u, v. Degenerate lanes (unused ones at the
 /// origin among them) are never set; an unused lane that repeats lane 0 answers as lane 0. Lanes
 /// are not checked against their ids: the caller skips kNoPrimitive and ids of other kinds.
-/// Always inlined: it is the wide walks' leaf test, and GCC's own choice depends on how much else
-/// the calling file inlines (the packet walk's file once left it out of line, 3% more work).
-[[gnu::always_inline]] inline int intersect_triangle_block(const TriangleBlock4& block, const WatertightRay& wr,
-                                                           float tmin, float tmax, float t_out[4], float u_out[4],
-                                                           float v_out[4]) {
+inline int intersect_triangle_block(const TriangleBlock4& block, const WatertightRay& wr, float tmin, float tmax,
+                                    float t_out[4], float u_out[4], float v_out[4]) {
   using simd::Double4;
   using simd::Float4;
   const Float4 ox = Float4::broadcast(wr.origin[wr.kx]), oy = Float4::broadcast(wr.origin[wr.ky]),

@@ -21,9 +21,8 @@ struct WatertightRays {
 };
 
 /// The constants of the N rays `r[0..N)` as lanes. They must share r[0]'s axis permutation.
-/// Always inlined: a call returns the lanes through memory, which costs more than the transpose.
 template <int N>
-[[gnu::always_inline]] inline WatertightRays<N> watertight_rays(const WatertightRay* r) {
+inline WatertightRays<N> watertight_rays(const WatertightRay* r) {
   using F = simd::WideFloat<N>;
   alignas(64) float lanes[6][N];
   for (int i = 0; i < N; ++i) {
