@@ -1,8 +1,7 @@
 #pragma once
 // The one leaf test of the structures that test primitives one by one (internal to src/accel):
-// the binary BVH's leaves, the uniform grid's cells, the octree's leaves and the wide BVH's
-// non-triangle lists. It holds the rule every structure must share — on an exact tie in t the
-// lower primitive id wins (Hit::tie_limit) — so that all of them return the same hit.
+// the binary BVH's leaves, the uniform grid's cells and the octree's leaves. It holds the rule every structure must
+// share — on an exact tie in t the lower primitive id wins (Hit::tie_limit) — so that all of them return the same hit.
 
 #include <cstdint>
 
@@ -43,8 +42,8 @@ struct SlotPrimitives {
   const Sphere& sphere(std::uint32_t slot, std::uint32_t /*id*/) const { return spheres[slot]; }
 };
 
-/// Primitives read from the Geometry by global id, with no copies: the octree and the wide
-/// BVH's lists of non-triangles. `ids` still maps a structure's slot to the global id.
+/// Primitives read from the Geometry by global id, with no copies: the octree. `ids` still maps a structure's slot to
+/// the global id.
 struct GeometryPrimitives {
   static constexpr bool kInlineSpheres = true;  ///< spheres are tested here
 

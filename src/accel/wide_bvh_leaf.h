@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <span>
 
 #include "leaf_test.h"
 #include "raylab/accel/wide_bvh.h"
@@ -27,19 +26,6 @@ inline std::uint32_t leaf_block_count(std::uint32_t count_flags) {
 template <int W>
 inline bool leaf_has_others(std::uint32_t count_flags) {
   return (count_flags & WideBvhNode<W>::kLeafHasOthers) != 0;
-}
-
-/// Tests the primitives `ids` (global ids) with the common leaf test. Kept out of line: most
-/// trees hold triangles only, and inlining this rarely taken path into the walk was measured to
-/// cost single-ray occlusion queries about 9% more instructions (callgrind, bunny).
-template <bool kAnyHit, bool kCount>
-[[gnu::noinline]] bool intersect_id_list(std::span<const std::uint32_t> ids, const Geometry& geometry,
-                                         const WatertightRay& tri_ray, const Ray& ray, float tmin, float& tmax,
-                                         Hit& best, TraversalCounters& counters) {
-  TestEverySlot every_slot;
-  return intersect_references<kAnyHit, kCount>(GeometryPrimitives(ids.data(), geometry), 0,
-                                               static_cast<std::uint32_t>(ids.size()), SlotIsReference{}, every_slot,
-                                               tri_ray, ray, tmin, tmax, best, counters);
 }
 
 /// Tests the primitives of a leaf listed by id, not in its triangle blocks (`first` and
