@@ -16,6 +16,7 @@ packages=(
   clang-format
   clang                # libFuzzer targets (make fuzz)
   python3-jsonschema   # the test that validates shipped scenes against scenes/scene.schema.json
+  pybind11-dev python3-dev python3-numpy python3-pytest   # the Python module (python/) and its tests
 )
 
 missing=()

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "hit_list.h"
+
 namespace raylab {
 
 BruteForce::BruteForce(const Geometry& geometry) : BruteForce(geometry, geometry.primitive_ids()) {}
@@ -48,6 +50,17 @@ bool BruteForce::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
 
 // The four entry points, compiled here where the kernel is defined.
 template class TraversalAccelerator<BruteForce>;
+
+void BruteForce::all_hits(const Ray& ray, std::vector<Hit>& hits) const {
+  const WatertightRay wr(ray);
+  const std::size_t first = hits.size();
+  for (std::uint32_t id : m_ids) {
+    Ray probe = ray;
+    Hit hit;
+    if (m_geometry.intersect(id, wr, probe, hit)) hits.push_back(hit);
+  }
+  order_all_hits(hits, first);
+}
 
 AccelInfo BruteForce::info() const {
   AccelInfo info;

@@ -36,12 +36,6 @@ inline std::vector<Triangle> triangles_in_leaf_order(const Geometry& geometry,
 /// culled by rounding.
 inline constexpr float kSlabWiden = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 
-/// The ray's direction octant: bit a is set when direction component a is negative (-0
-/// included: its reciprocal is -inf). It decides which of a box's two planes is met first.
-inline int direction_octant(Vec3 d) {
-  return (std::signbit(d.x) ? 1 : 0) | (std::signbit(d.y) ? 2 : 0) | (std::signbit(d.z) ? 4 : 0);
-}
-
 /// Calls `f(std::integral_constant<int, octant>{})`, so a kernel can be instantiated once per
 /// octant with its near and far planes known at compile time.
 template <class F>

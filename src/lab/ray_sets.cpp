@@ -98,15 +98,7 @@ std::vector<Ray> primary_rays(const Scene& scene, int width, int height) {
   if (width < 1 || height < 1) {
     throw UsageError("ray set size must be at least 1x1, not " + std::to_string(width) + "x" + std::to_string(height));
   }
-  const Camera camera(scene.camera, width, height);
-  std::vector<Ray> rays(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      rays[static_cast<std::size_t>(y) * width + x] =
-          camera.generate(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-    }
-  }
-  return rays;
+  return pixel_centre_rays(scene.camera, width, height);
 }
 
 RaySets make_ray_sets(const Scene& scene, const Accelerator& reference, const RaySetOptions& options) {

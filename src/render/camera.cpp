@@ -43,4 +43,15 @@ bool Camera::project(Vec3 p, float& x, float& y) const {
   return true;
 }
 
+std::vector<Ray> pixel_centre_rays(const CameraSpec& spec, int width, int height) {
+  const Camera camera(spec, width, height);
+  std::vector<Ray> rays;
+  rays.reserve(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x)
+      rays.push_back(camera.generate(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
+  }
+  return rays;
+}
+
 }  // namespace raylab

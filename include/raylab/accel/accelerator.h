@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "raylab/core/box.h"
 #include "raylab/core/ray.h"
@@ -54,6 +55,13 @@ class Accelerator {
 
   /// Any-hit for a group of rays: `occluded[i]` is set to 1 or 0. Default: one by one.
   virtual void occluded(std::span<const Ray> rays, std::span<std::uint8_t> occluded) const;
+
+  /// Every primitive hit in [ray.tmin, ray.tmax), appended to `hits` sorted by (t, prim_id),
+  /// each primitive once: for counting the surfaces a ray crosses. The default finds them as
+  /// successive closest hits, each search starting just past the last one's distance, so two
+  /// primitives hit at exactly the same float distance count as one; structures that can
+  /// visit every hit override it with an exact walk (brute force, the wide BVH).
+  virtual void all_hits(const Ray& ray, std::vector<Hit>& hits) const;
 
   /// Build time, memory and sizes.
   virtual AccelInfo info() const = 0;

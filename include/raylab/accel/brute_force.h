@@ -22,6 +22,8 @@ class BruteForce final : public TraversalAccelerator<BruteForce> {
 
   Box3 bounds() const override { return m_bounds; }
   AccelInfo info() const override;
+  /// Exact: tests every primitive once.
+  void all_hits(const Ray& ray, std::vector<Hit>& hits) const override;
 
  private:
   friend class TraversalAccelerator<BruteForce>;

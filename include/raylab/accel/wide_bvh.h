@@ -118,6 +118,8 @@ class WideBvh final : public TraversalAccelerator<WideBvh<W>> {
   using TraversalAccelerator<WideBvh<W>>::occluded;
   void intersect(std::span<Ray> rays, std::span<Hit> hits) const override;
   void occluded(std::span<const Ray> rays, std::span<std::uint8_t> occluded) const override;
+  /// Exact: walks every box the ray enters within its range and keeps every hit.
+  void all_hits(const Ray& ray, std::vector<Hit>& hits) const override;
   AccelInfo info() const override;
 
   /// The tree, for tests and tools.

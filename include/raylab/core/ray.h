@@ -27,6 +27,13 @@ struct Ray {
 };
 static_assert(sizeof(Ray) == 32, "Ray must match the .rays record layout");
 
+/// The ray's direction octant: bit a is set when direction component a is negative (-0
+/// included: its reciprocal is -inf). It decides which of a box's two planes is met first, and
+/// which rays can share a packet.
+inline int direction_octant(Vec3 d) {
+  return (std::signbit(d.x) ? 1 : 0) | (std::signbit(d.y) ? 2 : 0) | (std::signbit(d.z) ? 4 : 0);
+}
+
 /// The closest (or any) hit found by an accelerator: what traversal knows, nothing more. Shading
 /// data (normal, uv, material) is computed afterwards from `prim_id` (see geometry/shading.h).
 struct Hit {

@@ -18,17 +18,17 @@ namespace raylab {
 /// of origin-then-direction rows is origins = data, directions = data + 3, both strides 6.
 /// tmin and tmax are one value for every ray unless per-ray arrays are given.
 struct RayBatch {
-  std::size_t count = 0;                                  ///< number of rays
-  const float* origins = nullptr;                         ///< x, y, z of ray 0's origin
-  std::ptrdiff_t origin_stride = 3;                       ///< floats from one origin to the next
-  const float* directions = nullptr;                      ///< x, y, z of ray 0's direction
-  std::ptrdiff_t direction_stride = 3;                    ///< floats from one direction to the next
-  float tmin = 0.f;                                       ///< near limit of every ray (inclusive)
-  float tmax = std::numeric_limits<float>::infinity();    ///< far limit of every ray (exclusive)
-  const float* tmins = nullptr;                           ///< per-ray near limits (then `tmin` unused)
-  std::ptrdiff_t tmin_stride = 1;                         ///< floats from one near limit to the next
-  const float* tmaxs = nullptr;                           ///< per-ray far limits (then `tmax` unused)
-  std::ptrdiff_t tmax_stride = 1;                         ///< floats from one far limit to the next
+  std::size_t count = 0;                                ///< number of rays
+  const float* origins = nullptr;                       ///< x, y, z of ray 0's origin
+  std::ptrdiff_t origin_stride = 3;                     ///< floats from one origin to the next
+  const float* directions = nullptr;                    ///< x, y, z of ray 0's direction
+  std::ptrdiff_t direction_stride = 3;                  ///< floats from one direction to the next
+  float tmin = 0.f;                                     ///< near limit of every ray (inclusive)
+  float tmax = std::numeric_limits<float>::infinity();  ///< far limit of every ray (exclusive)
+  const float* tmins = nullptr;                         ///< per-ray near limits (then `tmin` unused)
+  std::ptrdiff_t tmin_stride = 1;                       ///< floats from one near limit to the next
+  const float* tmaxs = nullptr;                         ///< per-ray far limits (then `tmax` unused)
+  std::ptrdiff_t tmax_stride = 1;                       ///< floats from one far limit to the next
 
   /// Ray `i` as the accelerators take it.
   Ray ray(std::size_t i) const {
@@ -61,12 +61,12 @@ struct RayBatch {
 /// Where the answers of a closest-hit batch go: arrays of the caller's, one entry per ray (two
 /// for `uv`, three for `normal`). Any pointer may be null: that answer is not written.
 struct HitArrays {
-  float* t = nullptr;                ///< distance in units of the direction; +inf on a miss
-  std::int32_t* prim_id = nullptr;   ///< primitive hit (triangle index for a mesh); -1 on a miss
-  std::int32_t* object_id = nullptr; ///< object of that primitive; -1 on a miss
-  float* uv = nullptr;               ///< barycentric weights of vertex 1 and 2 (triangles); 0 on a miss
-  float* normal = nullptr;           ///< unit geometric normal of the primitive as wound, not turned
-                                     ///< toward the ray; 0 on a miss
+  float* t = nullptr;                 ///< distance in units of the direction; +inf on a miss
+  std::int32_t* prim_id = nullptr;    ///< primitive hit (triangle index for a mesh); -1 on a miss
+  std::int32_t* object_id = nullptr;  ///< object of that primitive; -1 on a miss
+  float* uv = nullptr;                ///< barycentric weights of vertex 1 and 2 (triangles); 0 on a miss
+  float* normal = nullptr;            ///< unit geometric normal of the primitive as wound, not turned
+                                      ///< toward the ray; 0 on a miss
 };
 
 }  // namespace raylab

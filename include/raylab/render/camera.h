@@ -2,6 +2,8 @@
 /// \file
 /// Pinhole camera: maps image positions to primary rays.
 
+#include <vector>
+
 #include "raylab/core/ray.h"
 #include "raylab/scene/camera_spec.h"
 
@@ -29,5 +31,9 @@ class Camera {
   Vec3 m_forward;   ///< unit viewing direction (for the hither plane)
   float m_hither;   ///< distance of the near plane along m_forward
 };
+
+/// The rays of `spec`'s camera through the centre of every pixel of a `width` x `height`
+/// image (both at least 1), row-major from the top row: the primary rays of one sample per pixel.
+std::vector<Ray> pixel_centre_rays(const CameraSpec& spec, int width, int height);
 
 }  // namespace raylab

@@ -1,0 +1,303 @@
+#include "py_scene.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "accel_config.h"
+#include "numpy_views.h"
+#include "raylab/io/scene_loader.h"
+
+namespace raylab::python {
+
+namespace py = pybind11;
+
+int thread_count(const py::object& threads) {
+  if (threads.is_none()) return 0;
+  const int n = threads.cast<int>();
+  if (n < 1)
+    throw py::value_error("threads: expected None (all cores) or a count of at least 1, got " + std::to_string(n));
+  return n;
+}
+
+QueryOptions query_options(const py::object& threads) {
+  QueryOptions options;
+  options.threads = thread_count(threads);
+  options.should_stop = [] {
+    const py::gil_scoped_acquire gil;
+    return PyErr_CheckSignals() != 0;
+  };
+  return options;
+}
+
+namespace {
+
+// The rays of a query call: one (..., 6) array, or origins and directions of shape (..., 3).
+struct Rays {
+  FloatRows origins, directions;
+  RayBatch batch;
+};
+
+Rays rays_of(const py::object& origins, const py::object& directions, float tmin, float tmax) {
+  Rays r;
+  if (directions.is_none()) {
+    r.origins = float_rows(origins, "rays", 6);
+    r.batch.origins = r.origins.data;
+    r.batch.directions = r.origins.data + 3;
+    r.batch.origin_stride = r.batch.direction_stride = r.origins.row_stride;
+  } else {
+    r.origins = float_rows(origins, "origins", 3);
+    r.directions = float_rows(directions, "directions", 3);
+    if (r.origins.shape != r.directions.shape) {
+      throw py::value_error("directions: shape does not match origins (one direction per origin, both (..., 3))");
+    }
+    r.batch.origins = r.origins.data;
+    r.batch.directions = r.directions.data;
+    r.batch.origin_stride = r.origins.row_stride;
+    r.batch.direction_stride = r.directions.row_stride;
+  }
+  if (std::isnan(tmin) || std::isnan(tmax)) throw py::value_error("tmin, tmax: must not be NaN");
+  r.batch.count = r.origins.count;
+  r.batch.tmin = tmin;
+  r.batch.tmax = tmax;
+  return r;
+}
+
+// Runs a query with the GIL released; a Ctrl-C seen by the stop check becomes KeyboardInterrupt.
+template <class F>
+void without_gil(F&& run) {
+  try {
+    const py::gil_scoped_release released;
+    run();
+  } catch (const QueryInterrupted&) {
+    throw py::error_already_set();  // PyErr_CheckSignals left the KeyboardInterrupt set
+  }
+}
+
+py::dict intersect(const PyScene& s, const py::object& origins, const py::object& directions, float tmin, float tmax,
+                   const py::object& threads) {
+  const Rays r = rays_of(origins, directions, tmin, tmax);
+  const QueryOptions options = query_options(threads);
+  auto t = new_array<float>(r.origins.shape);
+  auto prim = new_array<std::int32_t>(r.origins.shape);
+  auto object = new_array<std::int32_t>(r.origins.shape);
+  auto uv = new_array<float>(r.origins.shape, 2);
+  auto normal = new_array<float>(r.origins.shape, 3);
+  const HitArrays out{t.mutable_data(), prim.mutable_data(), object.mutable_data(), uv.mutable_data(),
+                      normal.mutable_data()};
+  without_gil([&] { s.query.intersect(r.batch, out, options); });
+  py::dict result;
+  result["t"] = t;
+  result["prim_id"] = prim;
+  result["object_id"] = object;
+  result["uv"] = uv;
+  result["normal"] = normal;
+  return result;
+}
+
+py::array occluded(const PyScene& s, const py::object& origins, const py::object& directions, float tmin, float tmax,
+                   const py::object& threads) {
+  const Rays r = rays_of(origins, directions, tmin, tmax);
+  const QueryOptions options = query_options(threads);
+  auto out = new_array<bool>(r.origins.shape);
+  auto* flags = reinterpret_cast<std::uint8_t*>(out.mutable_data());  // numpy bools are bytes of 0 or 1
+  without_gil([&] { s.query.occluded(r.batch, flags, options); });
+  return out;
+}
+
+py::array count_intersections(const PyScene& s, const py::object& origins, const py::object& directions, float tmin,
+                              float tmax, const py::object& threads) {
+  const Rays r = rays_of(origins, directions, tmin, tmax);
+  const QueryOptions options = query_options(threads);
+  auto out = new_array<std::uint32_t>(r.origins.shape);
+  without_gil([&] { s.query.count_intersections(r.batch, out.mutable_data(), options); });
+  return out;
+}
+
+py::array contains(const PyScene& s, const py::object& points, const py::object& threads) {
+  const FloatRows p = float_rows(points, "points", 3);
+  const QueryOptions options = query_options(threads);
+  auto out = new_array<bool>(p.shape);
+  auto* flags = reinterpret_cast<std::uint8_t*>(out.mutable_data());
+  without_gil([&] { s.query.contains(p.data, p.count, p.row_stride, flags, options); });
+  return out;
+}
+
+// The triangles of a Mesh, read from the arrays with the GIL released (the arrays stay alive).
+RayQuery query_from_arrays(const py::object& vertices, const py::object& triangles) {
+  const auto tri = matrix<std::uint32_t>(triangles, "triangles", 3);
+  const std::span<const std::uint32_t> indices(tri.data(), static_cast<std::size_t>(tri.size()));
+  const py::array given = py::array::ensure(vertices);
+  if (given && given.dtype().is(py::dtype::of<double>())) {
+    const auto v = matrix<double>(vertices, "vertices", 3);
+    const std::span<const double> coords(v.data(), static_cast<std::size_t>(v.size()));
+    const py::gil_scoped_release released;
+    return RayQuery::from_triangles(coords, indices);
+  }
+  const auto v = matrix<float>(vertices, "vertices", 3);
+  const std::span<const float> coords(v.data(), static_cast<std::size_t>(v.size()));
+  const py::gil_scoped_release released;
+  return RayQuery::from_triangles(coords, indices);
+}
+
+// The library names the index array `indices`; Python users passed it as `triangles`.
+RayQuery checked_query_from_arrays(const py::object& vertices, const py::object& triangles) {
+  try {
+    return query_from_arrays(vertices, triangles);
+  } catch (const std::invalid_argument& e) {
+    const std::string message = e.what();
+    const std::string library_name = "indices:";
+    if (message.rfind(library_name, 0) == 0) throw py::value_error("triangles:" + message.substr(library_name.size()));
+    throw py::value_error(message);
+  }
+}
+
+PyScene make_mesh(const py::object& vertices, const py::object& triangles) {
+  PyScene s(checked_query_from_arrays(vertices, triangles));
+  s.vertices = vertices;
+  s.triangles = triangles;
+  s.source = "Mesh";
+  return s;
+}
+
+PyScene load(const py::object& path) {
+  const std::string source = py::str(py::module_::import("os").attr("fspath")(path));
+  Scene scene;
+  {
+    const py::gil_scoped_release released;
+    scene = load_scene(source);
+  }
+  PyScene s(RayQuery::from_scene(std::move(scene)));
+  s.source = source;
+  return s;
+}
+
+py::dict info(const PyScene& s) {
+  const AccelInfo i = s.query.accelerator().info();
+  py::dict d;
+  d["name"] = i.name;
+  d["build_seconds"] = i.build_seconds;
+  d["memory_bytes"] = i.memory_bytes;
+  d["node_count"] = i.node_count;
+  d["leaf_count"] = i.leaf_count;
+  d["primitive_count"] = i.primitive_count;
+  d["max_depth"] = i.max_depth;
+  return d;
+}
+
+}  // namespace
+
+void bind_scene(py::module_& m) {
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  const char* rays_doc = R"(
+    Rays are ``origins`` and ``directions`` of shape (..., 3), or one array ``rays`` of shape
+    (..., 6) (origin then direction per row, as Open3D takes them) with ``directions=None``.
+    Directions need not be unit length: ``t`` is measured in units of them. Each ray is
+    limited to tmin <= t < tmax. float32 arrays are read in place; other real dtypes are
+    converted. Answers keep the leading shape: (H, W, 3) rays give (H, W) answers.
+    ``threads``: None for all cores. The GIL is released while rays are traced, and Ctrl-C
+    interrupts the call (KeyboardInterrupt).)";
+
+  py::class_<PyScene>(m, "Scene", R"(Primitives and the acceleration structure built over them.
+
+Made by :func:`raylab.load` (any scene file, mesh file, built-in scene or SPD generator) or
+:class:`raylab.Mesh` (numpy arrays). Queries before :meth:`build` use ``accel="bvh"``.)")
+      .def(
+          "build",
+          [](PyScene& s, const std::string& accel, const py::object& threads, const py::kwargs& config) -> PyScene& {
+            const AccelConfig c = accel_config(accel, config);
+            const int n = thread_count(threads);
+            {
+              const py::gil_scoped_release released;
+              s.query.build(accel, c, n);
+            }
+            s.accel = accel;
+            return s;
+          },
+          py::arg("accel") = "bvh", py::kw_only(), py::arg("threads") = py::none(),
+          R"(Builds (or rebuilds) the acceleration structure and returns the scene.
+
+``accel`` is one of :func:`raylab.accelerators` ("bvh", "bvh2", "grid", "octree", "brute",
+"embree", ...). Keyword parameters configure it: bin_count, max_leaf_size, traversal_cost,
+intersection_cost, spatial_splits, spatial_split_alpha, spatial_split_budget for the BVHs;
+density and mailbox for "grid"; max_items, max_depth and mailbox for "octree". An unknown
+name raises ValueError, an unknown parameter TypeError.)",
+          py::return_value_policy::reference_internal)
+      .def("intersect", &intersect, py::arg("origins"), py::arg("directions") = py::none(), py::kw_only(),
+           py::arg("tmin") = 0.f, py::arg("tmax") = kInf, py::arg("threads") = py::none(),
+           (std::string(R"(Closest hit of every ray.
+
+Returns a dict of arrays: ``t`` (float32, inf on a miss), ``prim_id`` and ``object_id``
+(int32, -1 on a miss), ``uv`` (..., 2) (barycentric weights of the triangle's vertices 1 and 2)
+and ``normal`` (..., 3) (the unit geometric normal as the primitive is wound, 0 on a miss).
+)") + rays_doc)
+               .c_str())
+      .def("occluded", &occluded, py::arg("origins"), py::arg("directions") = py::none(), py::kw_only(),
+           py::arg("tmin") = 0.f, py::arg("tmax") = kInf, py::arg("threads") = py::none(),
+           (std::string("Whether anything lies on each ray (bool array): the any-hit query of shadow rays.\n") +
+            rays_doc)
+               .c_str())
+      .def("count_intersections", &count_intersections, py::arg("origins"), py::arg("directions") = py::none(),
+           py::kw_only(), py::arg("tmin") = 0.f, py::arg("tmax") = kInf, py::arg("threads") = py::none(),
+           (std::string(R"(How many primitives each ray crosses (uint32 array).
+
+A ray through an edge or vertex shared by triangles counts one crossing there (a consistent
+tie rule), so a ray from outside that leaves a closed mesh crosses it an even number of times.
+Exact with "bvh" and "brute"; the other structures count two crossings at exactly the same
+distance as one.
+)") + rays_doc)
+               .c_str())
+      .def("contains", &contains, py::arg("points"), py::kw_only(), py::arg("threads") = py::none(),
+           R"(Whether each point of ``points`` (..., 3) lies inside the closed surfaces of the scene
+(bool array of the leading shape): a ray from the point crosses them an odd number of times.
+The triangles must form closed surfaces; a point on the surface may go either way.)")
+      .def_property_readonly(
+          "accel", [](const PyScene& s) { return s.accel; }, "Name of the structure queries use.")
+      .def_property_readonly("info", &info,
+                             "The structure's build time, memory, node, leaf and primitive counts (builds it if "
+                             "needed).")
+      .def_property_readonly(
+          "primitive_count", [](const PyScene& s) { return s.query.geometry().size(); },
+          "Number of primitives (triangle ids come first, in input order).")
+      .def_property_readonly(
+          "bounds",
+          [](const PyScene& s) {
+            const Box3 b = s.query.geometry().bounds();
+            py::array_t<float> out({2, 3});
+            auto w = out.mutable_unchecked<2>();
+            for (int a = 0; a < 3; ++a) {
+              w(0, a) = b.lo[a];
+              w(1, a) = b.hi[a];
+            }
+            return out;
+          },
+          "Bounding box as a (2, 3) array: minimum row, then maximum row.")
+      .def_property_readonly(
+          "vertices", [](const PyScene& s) { return s.vertices; },
+          "The vertex array a Mesh was made from, as given (None for a loaded scene).")
+      .def_property_readonly(
+          "triangles", [](const PyScene& s) { return s.triangles; },
+          "The triangle array a Mesh was made from, as given (None for a loaded scene).")
+      .def("__repr__", [](const PyScene& s) {
+        return "<raylab.Scene " + s.source + ": " + std::to_string(s.query.geometry().size()) + " primitives, accel " +
+               s.accel + ">";
+      });
+
+  m.def("Mesh", &make_mesh, py::arg("vertices"), py::arg("triangles"),
+        R"(A triangle mesh from arrays: ``vertices`` (N, 3) float32 or float64 and ``triangles`` (M, 3) of
+vertex indices. Triangle i gets ``prim_id`` i; every triangle is object 0. A C-contiguous float32
+``vertices`` and uint32 ``triangles`` are read without a conversion copy (the scene keeps its own
+compact copy of the triangles for tracing). Raises TypeError for a non-numeric array and
+ValueError, naming the argument, for a wrong shape, an index out of range or a vertex that is
+not finite.)");
+  m.def("load", &load, py::arg("path"),
+        R"(Loads a scene: a file by its extension (.json, .nff, .obj, .gltf, .glb, .ply, .off, .stl), a
+built-in scene ("demo", "cornell", ...) or an SPD generator ("spd:balls?size=3"). Instances are
+baked into copies. Raises raylab.SceneError (with .file, .line, .column) for a broken file and
+ValueError for an unknown name or extension.)");
+}
+
+}  // namespace raylab::python
