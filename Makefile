@@ -1,5 +1,5 @@
 # The two commands of README.md. Each installs what is missing, configures and builds.
-#   make demo   renders the built-in scene to demo.png
+#   make demo   renders the built-in scene to demo.png and builds the Python module
 #   make test   builds everything and runs the whole test suite
 # CMAKE_ARGS adds configure options, e.g. make test CMAKE_ARGS=-DRAYLAB_WERROR=ON
 
@@ -17,9 +17,11 @@ configure: deps
 	cmake --preset $(PRESET) -DRAYLAB_BUILD_TESTS=ON $(CMAKE_ARGS)
 
 demo: configure
-	cmake --build $(BUILD_DIR) --target raylab_cli -j $(JOBS)
+	cmake --build $(BUILD_DIR) --target raylab_cli raylab_python -j $(JOBS)
 	$(BUILD_DIR)/bin/raylab render demo -o demo.png
+	PYTHONPATH=$(BUILD_DIR)/python /usr/bin/python3 -c "import raylab; print('python: raylab', raylab.__version__)"
 	@echo "demo: image at $(CURDIR)/demo.png"
+	@echo "demo: Python module: PYTHONPATH=$(CURDIR)/$(BUILD_DIR)/python /usr/bin/python3 (docs/python.md)"
 
 test: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
