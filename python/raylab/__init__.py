@@ -41,6 +41,7 @@ from ._raylab import (  # noqa: E402  (after the CPU check, on purpose)
     compare,
     load,
     pinhole_rays,
+    quality,
     render,
     write_image,
 )
@@ -54,6 +55,7 @@ __all__ = [
     "compare",
     "load",
     "pinhole_rays",
+    "quality",
     "render",
     "write_image",
     "__version__",

@@ -131,3 +131,17 @@ def compare(
 ) -> dict[str, Any]:
     """The figures of `raylab compare --json` for the scene."""
 
+
+def quality(
+    scene: Scene | _Path,
+    *,
+    samplers: Sequence[str] | None = None,
+    budgets: Sequence[int] = (1, 4, 16, 64),
+    seeds: int = 5,
+    reference: _Path | _Floats | None = None,
+    reference_spp: int = 1024,
+    width: int | None = None,
+    height: int | None = None,
+    threads: int | None = None,
+) -> dict[str, Any]:
+    """The figures of `raylab quality --json`: samplers at budgets against a reference image."""

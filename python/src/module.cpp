@@ -44,4 +44,5 @@ PYBIND11_MODULE(_raylab, m) {
 
   raylab::python::bind_scene(m);
   raylab::python::bind_render(m);
+  raylab::python::bind_lab(m);
 }

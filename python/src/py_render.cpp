@@ -10,7 +10,6 @@
 #include "raylab/accel/two_level.h"
 #include "raylab/io/image_io.h"
 #include "raylab/io/scene_loader.h"
-#include "raylab/lab/accel_compare.h"
 #include "raylab/query/camera_rays.h"
 #include "raylab/render/film.h"
 #include "raylab/render/renderer.h"
@@ -19,10 +18,6 @@ namespace raylab::python {
 
 namespace py = pybind11;
 
-namespace {
-
-// The scene a render or comparison runs on: a path or name is loaded; a Scene is used as it is
-// (a Mesh gets a fitted camera and two lights, as a mesh file does).
 Scene scene_of(const py::object& scene_or_path) {
   if (py::isinstance<PyScene>(scene_or_path)) {
     Scene scene = scene_or_path.cast<const PyScene&>().query.scene();
@@ -33,6 +28,8 @@ Scene scene_of(const py::object& scene_or_path) {
   const py::gil_scoped_release released;
   return load_scene(path);
 }
+
+namespace {
 
 py::array_t<float> render_image(const py::object& scene_or_path, std::optional<int> width, std::optional<int> height,
                                 std::optional<int> spp, std::optional<std::string> sampler, const std::string& accel,
@@ -100,26 +97,6 @@ py::array_t<float> pinhole(int width, int height, const std::array<float, 3>& ey
   return rays;
 }
 
-py::object compare(const py::object& scene_or_path, std::optional<std::vector<std::string>> accels, int width,
-                   int height, int repeat, const py::object& threads) {
-  const Scene scene = scene_of(scene_or_path);
-  CompareOptions options;
-  if (accels)
-    options.accels = *accels;
-  else
-    options.accels = default_compare_accels();
-  options.rays.width = width;
-  options.rays.height = height;
-  options.repeat = repeat;
-  options.threads = thread_count(threads);
-  std::string json;
-  {
-    const py::gil_scoped_release released;
-    json = format_compare_json(compare_accelerators(scene, options), "scene");
-  }
-  return py::module_::import("json").attr("loads")(json);
-}
-
 }  // namespace
 
 void bind_render(py::module_& m) {
@@ -137,10 +114,6 @@ appears whole or not at all.)");
         R"(The rays of a pinhole camera through every pixel centre: a float32 (height, width, 6) array of
 origin and unit direction, row 0 at the top, exactly as the renderer generates them. ``fov`` is
 the vertical field of view in degrees.)");
-  m.def("compare", &compare, py::arg("scene"), py::kw_only(), py::arg("accels") = py::none(), py::arg("width") = 256,
-        py::arg("height") = 256, py::arg("repeat") = 3, py::arg("threads") = py::none(),
-        R"(The lab's side-by-side comparison of acceleration structures on one scene (primary, shadow and
-diffuse rays): the same figures as ``raylab compare --json``, as Python data.)");
 }
 
 }  // namespace raylab::python

@@ -70,3 +70,23 @@ def test_pinhole_rays_are_unit_and_centred():
     assert np.all(rays[..., :3] == np.float32([1, 2, 3]))
     with pytest.raises(ValueError, match="fov"):
         raylab.pinhole_rays(4, 4, eye=(0, 0, 1), at=(0, 0, 0), fov=0)
+
+
+def test_quality_returns_the_command_lines_json(tmp_path, binary):
+    args = dict(samplers=["jittered", "adaptive"], budgets=[4], seeds=1, width=24, height=16)
+    result = raylab.quality("aa-edges", reference_spp=64, **args)
+    reference = raylab.render("aa-edges", width=24, height=16, spp=64, sampler="jittered")
+    given = raylab.quality("aa-edges", reference=reference, **args)
+    out = tmp_path / "quality.json"
+    subprocess.run([binary, "quality", "aa-edges", "--samplers", "jittered,adaptive", "--budgets", "4", "--seeds",
+                    "1", "--width", "24", "--height", "16", "--reference-spp", "64", "--json", str(out),
+                    "--cache-dir", str(tmp_path)], check=True, capture_output=True)
+    cli = json.loads(out.read_text())
+    assert set(cli) == set(result)
+    for key in ("rows",):
+        ours = [(r["sampler"], r["budget"], r["rmse"]) for r in result[key]]
+        theirs = [(r["sampler"], r["budget"], r["rmse"]) for r in cli[key]]
+        assert ours == theirs
+    assert len(given["rows"]) == 2
+    with pytest.raises(ValueError, match="reference"):
+        raylab.quality("aa-edges", reference=np.zeros((4, 4, 3), np.float32), **args)
