@@ -94,7 +94,7 @@ class Scene:
 def Mesh(vertices: _Floats, triangles: npt.ArrayLike) -> Scene:
     """A triangle mesh from (N, 3) vertices and (M, 3) vertex indices."""
 
-def load(path: _Path) -> Scene:
+def load(path: _Path, *, allow_outside_paths: bool = False) -> Scene:
     """A scene file, mesh file, built-in scene ("demo") or SPD generator ("spd:balls")."""
 
 def accelerators() -> list[str]:

@@ -163,12 +163,14 @@ PyScene make_mesh(const py::object& vertices, const py::object& triangles) {
   return s;
 }
 
-PyScene load(const py::object& path) {
+PyScene load(const py::object& path, bool allow_outside_paths) {
   const std::string source = py::str(py::module_::import("os").attr("fspath")(path));
+  LoadOptions options;
+  options.allow_outside_paths = allow_outside_paths;
   Scene scene;
   {
     const py::gil_scoped_release released;
-    scene = load_scene(source);
+    scene = load_scene(source, options);
   }
   PyScene s(RayQuery::from_scene(std::move(scene)));
   s.source = source;
@@ -293,10 +295,11 @@ vertex indices. Triangle i gets ``prim_id`` i; every triangle is object 0. A C-c
 compact copy of the triangles for tracing). Raises TypeError for a non-numeric array and
 ValueError, naming the argument, for a wrong shape, an index out of range or a vertex that is
 not finite.)");
-  m.def("load", &load, py::arg("path"),
+  m.def("load", &load, py::arg("path"), py::kw_only(), py::arg("allow_outside_paths") = false,
         R"(Loads a scene: a file by its extension (.json, .nff, .obj, .gltf, .glb, .ply, .off, .stl), a
 built-in scene ("demo", "cornell", ...) or an SPD generator ("spd:balls?size=3"). Instances are
-baked into copies. Raises raylab.SceneError (with .file, .line, .column) for a broken file and
+baked into copies. A scene file may refer to files outside its own folder only with
+``allow_outside_paths=True`` (as the command line's --allow-outside-paths). Raises raylab.SceneError (with .file, .line, .column) for a broken file and
 ValueError for an unknown name or extension.)");
 }
 

@@ -35,15 +35,17 @@ bool coherent(const std::vector<Ray>& rays) {
 }
 
 // The unit geometric normal of primitive `hit.prim_id` as the primitive is wound, whichever
-// side the ray came from.
-Vec3 wound_normal(const Geometry& geometry, const Ray& ray, const Hit& hit) {
+// side the ray came from. Triangles need only their vertices; other shapes ask surface_at with
+// the ray as the caller gave it (`ray_of()`).
+template <class RayOf>
+Vec3 wound_normal(const Geometry& geometry, const Hit& hit, const RayOf& ray_of) {
   if (hit.prim_id < geometry.triangles.size()) return normalize(triangle_normal(geometry.triangles[hit.prim_id]));
-  const SurfaceInteraction s = surface_at(geometry, ray, hit);
+  const SurfaceInteraction s = surface_at(geometry, ray_of(), hit);
   return s.front_face ? s.geometric_normal : -s.geometric_normal;
 }
 
-// Writes the answer of ray `i` to `out`.
-void write_hit(const Geometry& geometry, const Ray& ray, const Hit& hit, std::size_t i, const HitArrays& out) {
+// Writes the answer of ray `i` of `rays` to `out`.
+void write_hit(const Geometry& geometry, const RayBatch& rays, const Hit& hit, std::size_t i, const HitArrays& out) {
   const bool found = hit.valid();
   if (out.t != nullptr) out.t[i] = found ? hit.t : std::numeric_limits<float>::infinity();
   if (out.prim_id != nullptr) out.prim_id[i] = found ? static_cast<std::int32_t>(hit.prim_id) : -1;
@@ -55,7 +57,7 @@ void write_hit(const Geometry& geometry, const Ray& ray, const Hit& hit, std::si
     out.uv[2 * i + 1] = found ? hit.v : 0.f;
   }
   if (out.normal != nullptr) {
-    const Vec3 n = found ? wound_normal(geometry, ray, hit) : Vec3{};
+    const Vec3 n = found ? wound_normal(geometry, hit, [&] { return rays.ray(i); }) : Vec3{};
     for (int a = 0; a < 3; ++a) out.normal[3 * i + static_cast<std::size_t>(a)] = n[a];
   }
 }
@@ -73,23 +75,24 @@ void RayQuery::intersect(const RayBatch& rays, const HitArrays& out, const Query
   const Accelerator& accel = accelerator();
   const Geometry& geometry = m_state->scene.geometry;
   run_query_batch(rays.count, options, [&](std::size_t begin, std::size_t end) {
-    std::vector<Ray> chunk;
+    // Per thread, so that a chunk allocates nothing.
+    thread_local std::vector<Ray> chunk;
+    thread_local std::vector<Hit> hits;
     gather(rays, begin, end, chunk);
-    std::vector<Ray> traced = chunk;  // intersect shrinks tmax; the normal wants the ray as given
-    std::vector<Hit> hits(chunk.size());
+    hits.assign(chunk.size(), Hit{});
     if (coherent(chunk)) {
-      accel.intersect(std::span<Ray>(traced), std::span<Hit>(hits));
+      accel.intersect(std::span<Ray>(chunk), std::span<Hit>(hits));
     } else {
-      for (std::size_t i = 0; i < chunk.size(); ++i) accel.intersect(traced[i], hits[i]);
+      for (std::size_t i = 0; i < chunk.size(); ++i) accel.intersect(chunk[i], hits[i]);
     }
-    for (std::size_t i = 0; i < chunk.size(); ++i) write_hit(geometry, chunk[i], hits[i], begin + i, out);
+    for (std::size_t i = 0; i < chunk.size(); ++i) write_hit(geometry, rays, hits[i], begin + i, out);
   });
 }
 
 void RayQuery::occluded(const RayBatch& rays, std::uint8_t* occluded, const QueryOptions& options) const {
   const Accelerator& accel = accelerator();
   run_query_batch(rays.count, options, [&](std::size_t begin, std::size_t end) {
-    std::vector<Ray> chunk;
+    thread_local std::vector<Ray> chunk;
     gather(rays, begin, end, chunk);
     if (coherent(chunk)) {
       accel.occluded(std::span<const Ray>(chunk), std::span<std::uint8_t>(occluded + begin, chunk.size()));
@@ -102,7 +105,7 @@ void RayQuery::occluded(const RayBatch& rays, std::uint8_t* occluded, const Quer
 void RayQuery::count_intersections(const RayBatch& rays, std::uint32_t* counts, const QueryOptions& options) const {
   const Accelerator& accel = accelerator();
   run_query_batch(rays.count, options, [&](std::size_t begin, std::size_t end) {
-    std::vector<Hit> scratch;
+    thread_local std::vector<Hit> scratch;
     for (std::size_t i = begin; i < end; ++i) counts[i] = count_crossings(accel, rays.ray(i), scratch);
   });
 }
@@ -115,7 +118,7 @@ void RayQuery::contains(const float* points, std::size_t count, std::ptrdiff_t s
   // (where the tie rule would decide every answer) rare.
   const Vec3 direction = normalize(Vec3{0.5773f, 0.6411f, 0.5059f});
   run_query_batch(count, options, [&](std::size_t begin, std::size_t end) {
-    std::vector<Hit> scratch;
+    thread_local std::vector<Hit> scratch;
     for (std::size_t i = begin; i < end; ++i) {
       const float* p = points + static_cast<std::ptrdiff_t>(i) * stride;
       Ray ray;
