@@ -112,9 +112,9 @@ def run(command, what):
     return done.stdout
 
 
-def cpp_bench(binary, scene, kind, threads, repeats, width, height, out_dir):
+def cpp_bench(binary, scene, kind, threads, repeats, width, height, out_dir, purpose="rays"):
     """Runs `raylab bench` on one ray kind; its JSON report, the command and the .rays/.hits paths."""
-    stem = out_dir / f"{pathlib.Path(scene).stem}-{kind}-t{threads}"
+    stem = out_dir / f"{pathlib.Path(scene).stem}-{purpose}-{kind}-t{threads}"
     paths = {ext: str(stem) + "." + ext for ext in ("json", "rays", "hits")}
     command = [binary, "bench", scene, "--rays", kind, "--threads", str(threads), "--repeats", str(repeats),
                "--width", str(width), "--height", str(height), "--json", paths["json"], "--rays-out", paths["rays"],
@@ -440,7 +440,8 @@ def same_mesh(mesh, loaded):
 
 def build_sample(args, mesh_file, threads, vertices, triangles, out_dir):
     """One round of one build row: raylab bench's build (a few rays only), then Mesh(...).build."""
-    report, command, _ = cpp_bench(args.binary, mesh_file, "primary", threads, args.repeats, 64, 48, out_dir)
+    report, command, _ = cpp_bench(args.binary, mesh_file, "primary", threads, args.repeats, 64, 48, out_dir,
+                                   purpose="build")
     make_s, build_s, total_s = [], [], []
     for _ in range(args.repeats):
         start = time.perf_counter()
