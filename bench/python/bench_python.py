@@ -239,7 +239,7 @@ KEEP_PAGES_ENV = {"MALLOC_MMAP_THRESHOLD_": str(32 << 20), "MALLOC_TRIM_THRESHOL
 def python_pages_kept(scene_path, rays_path, threads, repeats):
     """Mrays/s of Scene.intersect in a child process with KEEP_PAGES_ENV.
 
-    Each call returns new numpy arrays of answers, 36 bytes a ray. When glibc hands the freed
+    Each call returns new numpy arrays of answers, 32 bytes a ray. When glibc hands the freed
     arrays of the previous call back to the kernel, every call faults its output pages in again
     and the kernel zeroes them; whether it does depends on the heap's layout. The child shows
     the speed without that cost (see --time-intersect).
