@@ -12,7 +12,7 @@ _Path = str | os.PathLike[str]
 _Floats = npt.ArrayLike
 _Vec3 = tuple[float, float, float] | Sequence[float]
 
-class Hits(TypedDict):
+class Hits(TypedDict, total=False):
     """What Scene.intersect returns, each array of the rays' leading shape."""
 
     t: npt.NDArray[np.float32]
@@ -45,9 +45,10 @@ class Scene:
         origins: _Floats,
         directions: _Floats | None = None,
         *,
-        tmin: float = 0.0,
-        tmax: float = float("inf"),
+        tmin: float | _Floats = 0.0,
+        tmax: float | _Floats = float("inf"),
         threads: int | None = None,
+        fields: Sequence[str] | None = None,
     ) -> Hits:
         """Closest hit of every ray: origins and directions (..., 3), or rays (..., 6)."""
     def occluded(
@@ -55,8 +56,8 @@ class Scene:
         origins: _Floats,
         directions: _Floats | None = None,
         *,
-        tmin: float = 0.0,
-        tmax: float = float("inf"),
+        tmin: float | _Floats = 0.0,
+        tmax: float | _Floats = float("inf"),
         threads: int | None = None,
     ) -> npt.NDArray[np.bool_]:
         """Whether anything lies on each ray in [tmin, tmax)."""
@@ -65,8 +66,8 @@ class Scene:
         origins: _Floats,
         directions: _Floats | None = None,
         *,
-        tmin: float = 0.0,
-        tmax: float = float("inf"),
+        tmin: float | _Floats = 0.0,
+        tmax: float | _Floats = float("inf"),
         threads: int | None = None,
     ) -> npt.NDArray[np.uint32]:
         """How many primitives each ray crosses (shared edges and vertices count once)."""

@@ -3,6 +3,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -38,10 +39,34 @@ namespace {
 // The rays of a query call: one (..., 6) array, or origins and directions of shape (..., 3).
 struct Rays {
   FloatRows origins, directions;
+  py::object tmin_owner, tmax_owner;  ///< per-ray limits, when given as arrays
   RayBatch batch;
 };
 
-Rays rays_of(const py::object& origins, const py::object& directions, float tmin, float tmax) {
+// A ray limit (`name` is tmin or tmax): one number for every ray, or an array of the rays'
+// leading shape read as float32 (in place when it is a C-contiguous float32 array).
+void ray_limit(const py::object& value, const char* name, const std::vector<py::ssize_t>& shape, float& scalar,
+               const float*& per_ray, py::object& owner) {
+  if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) {
+    scalar = value.cast<float>();
+    if (std::isnan(scalar)) throw py::value_error(std::string(name) + ": must not be NaN");
+    return;
+  }
+  const auto a = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(value);
+  if (!a) throw py::type_error(std::string(name) + ": expected a number or an array of the rays' leading shape");
+  if (a.ndim() == 0) {  // a numpy scalar, such as a t taken from an earlier answer
+    scalar = *a.data();
+    if (std::isnan(scalar)) throw py::value_error(std::string(name) + ": must not be NaN");
+    return;
+  }
+  if (std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()) != shape) {
+    throw py::value_error(std::string(name) + ": an array of limits must have the rays' leading shape (one per ray)");
+  }
+  per_ray = a.data();
+  owner = a;
+}
+
+Rays rays_of(const py::object& origins, const py::object& directions, const py::object& tmin, const py::object& tmax) {
   Rays r;
   if (directions.is_none()) {
     r.origins = float_rows(origins, "rays", 6);
@@ -59,10 +84,9 @@ Rays rays_of(const py::object& origins, const py::object& directions, float tmin
     r.batch.origin_stride = r.origins.row_stride;
     r.batch.direction_stride = r.directions.row_stride;
   }
-  if (std::isnan(tmin) || std::isnan(tmax)) throw py::value_error("tmin, tmax: must not be NaN");
   r.batch.count = r.origins.count;
-  r.batch.tmin = tmin;
-  r.batch.tmax = tmax;
+  ray_limit(tmin, "tmin", r.origins.shape, r.batch.tmin, r.batch.tmins, r.tmin_owner);
+  ray_limit(tmax, "tmax", r.origins.shape, r.batch.tmax, r.batch.tmaxs, r.tmax_owner);
   return r;
 }
 
@@ -77,29 +101,59 @@ void without_gil(F&& run) {
   }
 }
 
-py::dict intersect(const PyScene& s, const py::object& origins, const py::object& directions, float tmin, float tmax,
-                   const py::object& threads) {
+// The answers of intersect: all five, or those named in `fields`.
+std::vector<std::string> hit_fields(const py::object& fields) {
+  const std::vector<std::string> all = {"t", "prim_id", "object_id", "uv", "normal"};
+  if (fields.is_none()) return all;
+  if (py::isinstance<py::str>(fields)) throw py::type_error("fields: expected a sequence of names, not one string");
+  std::vector<std::string> names = fields.cast<std::vector<std::string>>();
+  for (const std::string& n : names) {
+    if (std::find(all.begin(), all.end(), n) == all.end()) {
+      throw py::value_error("fields: unknown answer '" + n + "'; the answers are t, prim_id, object_id, uv, normal");
+    }
+  }
+  return names;
+}
+
+py::dict intersect(const PyScene& s, const py::object& origins, const py::object& directions, const py::object& tmin,
+                   const py::object& tmax, const py::object& threads, const py::object& fields) {
+  const std::vector<std::string> wanted = hit_fields(fields);
   const Rays r = rays_of(origins, directions, tmin, tmax);
   const QueryOptions options = query_options(threads);
-  auto t = new_array<float>(r.origins.shape);
-  auto prim = new_array<std::int32_t>(r.origins.shape);
-  auto object = new_array<std::int32_t>(r.origins.shape);
-  auto uv = new_array<float>(r.origins.shape, 2);
-  auto normal = new_array<float>(r.origins.shape, 3);
-  const HitArrays out{t.mutable_data(), prim.mutable_data(), object.mutable_data(), uv.mutable_data(),
-                      normal.mutable_data()};
-  without_gil([&] { s.query.intersect(r.batch, out, options); });
+  auto wants = [&](const char* name) { return std::find(wanted.begin(), wanted.end(), name) != wanted.end(); };
   py::dict result;
-  result["t"] = t;
-  result["prim_id"] = prim;
-  result["object_id"] = object;
-  result["uv"] = uv;
-  result["normal"] = normal;
+  HitArrays out;
+  if (wants("t")) {
+    auto a = new_array<float>(r.origins.shape);
+    out.t = a.mutable_data();
+    result["t"] = a;
+  }
+  if (wants("prim_id")) {
+    auto a = new_array<std::int32_t>(r.origins.shape);
+    out.prim_id = a.mutable_data();
+    result["prim_id"] = a;
+  }
+  if (wants("object_id")) {
+    auto a = new_array<std::int32_t>(r.origins.shape);
+    out.object_id = a.mutable_data();
+    result["object_id"] = a;
+  }
+  if (wants("uv")) {
+    auto a = new_array<float>(r.origins.shape, 2);
+    out.uv = a.mutable_data();
+    result["uv"] = a;
+  }
+  if (wants("normal")) {
+    auto a = new_array<float>(r.origins.shape, 3);
+    out.normal = a.mutable_data();
+    result["normal"] = a;
+  }
+  without_gil([&] { s.query.intersect(r.batch, out, options); });
   return result;
 }
 
-py::array occluded(const PyScene& s, const py::object& origins, const py::object& directions, float tmin, float tmax,
-                   const py::object& threads) {
+py::array occluded(const PyScene& s, const py::object& origins, const py::object& directions, const py::object& tmin,
+                   const py::object& tmax, const py::object& threads) {
   const Rays r = rays_of(origins, directions, tmin, tmax);
   const QueryOptions options = query_options(threads);
   auto out = new_array<bool>(r.origins.shape);
@@ -108,8 +162,8 @@ py::array occluded(const PyScene& s, const py::object& origins, const py::object
   return out;
 }
 
-py::array count_intersections(const PyScene& s, const py::object& origins, const py::object& directions, float tmin,
-                              float tmax, const py::object& threads) {
+py::array count_intersections(const PyScene& s, const py::object& origins, const py::object& directions,
+                              const py::object& tmin, const py::object& tmax, const py::object& threads) {
   const Rays r = rays_of(origins, directions, tmin, tmax);
   const QueryOptions options = query_options(threads);
   auto out = new_array<std::uint32_t>(r.origins.shape);
@@ -193,7 +247,7 @@ py::dict info(const PyScene& s) {
 }  // namespace
 
 void bind_scene(py::module_& m) {
-  constexpr float kInf = std::numeric_limits<float>::infinity();
+  const py::float_ kInf(std::numeric_limits<double>::infinity());
   const char* rays_doc = R"(
     Rays are ``origins`` and ``directions`` of shape (..., 3), or one array ``rays`` of shape
     (..., 6) (origin then direction per row, as Open3D takes them) with ``directions=None``.
@@ -201,7 +255,8 @@ void bind_scene(py::module_& m) {
     limited to tmin <= t < tmax. float32 arrays are read in place; other real dtypes are
     converted. Answers keep the leading shape: (H, W, 3) rays give (H, W) answers.
     ``threads``: None for all cores. The GIL is released while rays are traced, and Ctrl-C
-    interrupts the call (KeyboardInterrupt).)";
+    interrupts the call (KeyboardInterrupt). ``tmin`` and ``tmax`` are one number for all
+    rays or an array of the rays' leading shape (one limit per ray, e.g. shadow rays).)";
 
   py::class_<PyScene>(m, "Scene", R"(Primitives and the acceleration structure built over them.
 
@@ -230,11 +285,13 @@ name raises ValueError, an unknown parameter TypeError.)",
           py::return_value_policy::reference_internal)
       .def("intersect", &intersect, py::arg("origins"), py::arg("directions") = py::none(), py::kw_only(),
            py::arg("tmin") = 0.f, py::arg("tmax") = kInf, py::arg("threads") = py::none(),
+           py::arg("fields") = py::none(),
            (std::string(R"(Closest hit of every ray.
 
 Returns a dict of arrays: ``t`` (float32, inf on a miss), ``prim_id`` and ``object_id``
 (int32, -1 on a miss), ``uv`` (..., 2) (barycentric weights of the triangle's vertices 1 and 2)
 and ``normal`` (..., 3) (the unit geometric normal as the primitive is wound, 0 on a miss).
+``fields``: the names of the answers wanted (default all); fewer answers cost less.
 )") + rays_doc)
                .c_str())
       .def("occluded", &occluded, py::arg("origins"), py::arg("directions") = py::none(), py::kw_only(),

@@ -206,3 +206,24 @@ def test_contains_agrees_with_the_ball(sphere):
     assert inside.dtype == np.bool_
     np.testing.assert_array_equal(inside, r[keep] < 0.97)
     assert scene.contains(p[keep].reshape(-1, 1, 3)).shape == (keep.sum(), 1)
+
+
+def test_per_ray_limits_and_chosen_fields(sphere):
+    scene = raylab.Mesh(*sphere)
+    o = np.array([[0.013, 0.021, 4]] * 3, np.float32)  # off the axis, where vertices lie
+    d = np.array([[0, 0, -1]] * 3, np.float32)
+    near = scene.intersect(o[:1], d[:1])["t"][0]
+    # Per-ray limits: the whole ray, a ray stopping before the sphere, a ray starting inside it.
+    tmax = np.array([np.inf, near, np.inf], np.float32)
+    tmin = np.array([0, 0, near + 0.01], np.float64)  # converted to float32
+    hits = scene.intersect(o, d, tmin=tmin, tmax=tmax, fields=["t", "prim_id"])
+    assert set(hits) == {"t", "prim_id"}
+    assert hits["t"][0] == near and hits["t"][1] == np.inf and 4.9 < hits["t"][2] < 5.01
+    np.testing.assert_array_equal(scene.occluded(o, d, tmax=tmax), [True, False, True])
+    np.testing.assert_array_equal(scene.count_intersections(o, d, tmin=tmin), [2, 2, 1])
+    with pytest.raises(ValueError, match="tmax: an array of limits must have the rays' leading shape"):
+        scene.intersect(o, d, tmax=tmax[:2])
+    with pytest.raises(ValueError, match="fields: unknown answer 'depth'"):
+        scene.intersect(o, d, fields=["depth"])
+    with pytest.raises(TypeError, match="fields"):
+        scene.intersect(o, d, fields="t")
