@@ -298,9 +298,9 @@ def ray_figures(args, out_dir, notes):
                 for kind in RAY_KINDS:
                     sample = ray_sample(args, scene, kind, threads, scenes[name], out_dir)
                     samples.setdefault((name, scene, threads, kind), []).append(sample)
-                    log(f"round {round_index + 1}: {name} t{threads} {kind}: python "
-                        f"{fmt(sample.get('python'))} Mrays/s, C++ single {fmt(sample['cpp_single'])}, "
-                        f"packet16 {fmt(sample['cpp_packet16'])}")
+                    log(f"round {round_index + 1}: {name} t{threads} {kind}: python all "
+                        f"{fmt(sample['python'])}, t+prim_id {fmt(sample['python_hits'])} Mrays/s, "
+                        f"C++ single {fmt(sample['cpp_single'])}, packet16 {fmt(sample['cpp_packet16'])}")
     limits = sorted({s["limits"] for group in samples.values() for s in group})
     notes.append("ray limits of the .rays records traced (checked ray by ray; numbers passed as Scene.intersect's "
                  "tmin and tmax, per-ray limits as arrays): " + "; ".join(limits))
