@@ -10,6 +10,7 @@
 
 #include "accel_config.h"
 #include "numpy_views.h"
+#include "raylab/core/error.h"
 #include "raylab/io/scene_loader.h"
 
 namespace raylab::python {
@@ -222,9 +223,21 @@ PyScene load(const py::object& path, bool allow_outside_paths) {
   LoadOptions options;
   options.allow_outside_paths = allow_outside_paths;
   Scene scene;
-  {
+  try {
     const py::gil_scoped_release released;
     scene = load_scene(source, options);
+  } catch (const InputError& e) {
+    // The loader speaks to command-line users; name the keyword a Python user passes instead.
+    std::string message = e.what();
+    const std::string flag = "--allow-outside-paths";
+    if (const auto at = message.find(flag); at != std::string::npos) {
+      message.replace(at, flag.size(), "allow_outside_paths=True");
+      // e.what() already carries the position; keep file, line and column for SceneError.
+      const std::string prefix = e.file() + ":" + std::to_string(e.line()) + ":" + std::to_string(e.column()) + ": ";
+      if (message.rfind(prefix, 0) == 0) message = message.substr(prefix.size());
+      throw InputError(e.file(), e.line(), e.column(), message);
+    }
+    throw;
   }
   PyScene s(RayQuery::from_scene(std::move(scene)));
   s.source = source;

@@ -92,3 +92,14 @@ def test_broken_scene_file_raises_scene_error_with_its_position(tmp_path):
         raylab.load(tmp_path / "missing.obj")
     with pytest.raises(ValueError, match="unsupported scene format"):
         raylab.load(tmp_path / "scene.xyz")
+
+
+def test_outside_paths_are_refused_naming_the_keyword(tmp_path):
+    (tmp_path / "inner").mkdir()
+    (tmp_path / "tri.obj").write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+    scene_file = tmp_path / "inner" / "scene.json"
+    scene_file.write_text('{"version": 1, "objects": [{"type": "mesh", "file": "../tri.obj"}]}')
+    with pytest.raises(raylab.SceneError, match="allow_outside_paths=True") as error:
+        raylab.load(scene_file)
+    assert error.value.file.endswith("scene.json") and error.value.line > 0
+    assert raylab.load(scene_file, allow_outside_paths=True).primitive_count == 1
