@@ -3,10 +3,12 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "commands.h"
 #include "raylab/core/error.h"
 #include "raylab/dist/launcher.h"
+#include "raylab/version.h"
 
 int main(int argc, char** argv) {
   // A write past the file-size limit (ulimit -f) then fails with EFBIG, which the atomic writer
@@ -14,7 +16,7 @@ int main(int argc, char** argv) {
   std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"raylab: a ray tracing engine and lab for efficiency and quality"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "raylab 0.1.0");
+  app.set_version_flag("--version", std::string("raylab ") + raylab::version());
   const raylab::cli::CommandRunner run_render = raylab::cli::add_render_command(app);
   const raylab::cli::CommandRunner run_diff = raylab::cli::add_diff_command(app);
   const raylab::cli::CommandRunner run_info = raylab::cli::add_info_command(app);

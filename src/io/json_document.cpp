@@ -1,4 +1,4 @@
-#include "raylab/io/json_document.h"
+#include "json_document.h"
 
 #include <algorithm>
 #include <iterator>

@@ -6,8 +6,8 @@
 #include <optional>
 #include <vector>
 
+#include "json_document.h"
 #include "raylab/core/error.h"
-#include "raylab/io/json_document.h"
 #include "raylab/io/read_file.h"
 #include "raylab/io/scene_loader.h"
 #include "raylab/io/texture_io.h"

@@ -14,8 +14,8 @@
 #include <string_view>
 #include <utility>
 
+#include "json_document.h"
 #include "raylab/core/vec3.h"
-#include "raylab/io/json_document.h"
 
 namespace raylab::scene_json_detail {
 

@@ -56,10 +56,11 @@ class Cli : public ::testing::Test {
   fs::path out() const { return m_root / "out"; }
   std::string out_file(const std::string& name) const { return (out() / name).string(); }
 
-  CliResult run(const std::string& args) const {
+  // Runs `raylab args`, with `env` (shell assignments such as "NAME=value") in its environment.
+  CliResult run(const std::string& args, const std::string& env = "") const {
     const fs::path so = work() / "stdout.txt", se = work() / "stderr.txt";
-    const std::string cmd =
-        "'" + raylab::test::raylab_binary() + "' " + args + " >'" + so.string() + "' 2>'" + se.string() + "'";
+    const std::string cmd = (env.empty() ? "" : "env " + env + " ") + "'" + raylab::test::raylab_binary() + "' " +
+                            args + " >'" + so.string() + "' 2>'" + se.string() + "'";
     const int status = std::system(cmd.c_str());
     CliResult r;
     if (status != -1 && WIFEXITED(status)) r.code = WEXITSTATUS(status);

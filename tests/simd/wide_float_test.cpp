@@ -318,6 +318,8 @@ float scalar_edge(float a, float b, float c, float d) {
 TEST(Double4, SelectedImplementation) {
 #if !defined(RAYLAB_SIMD_SCALAR) && defined(__AVX__)
   static_assert(std::is_same_v<simd::Double4, simd::avx::Double4>);
+#elif !defined(RAYLAB_SIMD_SCALAR) && defined(__SSE2__)
+  static_assert(std::is_same_v<simd::Double4, simd::sse::Double4>);  // double4_sse_test.cpp
 #else
   static_assert(std::is_same_v<simd::Double4, sc::Double4>);
 #endif

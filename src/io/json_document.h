@@ -3,6 +3,7 @@
 /// JSON with positions: nlohmann::json keeps no source positions, but every message about a scene
 /// file must say `file:line:col`. A JsonDocument is the parsed value plus the line and column of
 /// every object key and every object or array, addressed by JSON pointer ("/objects/3/radius").
+/// Internal to src/io: it exposes nlohmann::json, which the installed headers must not need.
 
 #include <nlohmann/json.hpp>
 #include <string>
