@@ -33,6 +33,12 @@ libdir=$(sed -n 's/^CMAKE_INSTALL_LIBDIR:[A-Z]*=//p' "$build/CMakeCache.txt")
 # The exported targets' per-configuration file is named after the build type (noconfig if none).
 config=$(sed -n 's/^CMAKE_BUILD_TYPE:[A-Z]*=//p' "$build/CMakeCache.txt" | tr '[:upper:]' '[:lower:]')
 [[ -n "$version" && -n "$libdir" ]] || fail "no version or libdir in $build"
+# The Python module, when this build has it: its folder under the prefix and its interpreter.
+pydir=""
+if grep -q '^RAYLAB_BUILD_PYTHON:BOOL=ON' "$build/CMakeCache.txt"; then
+  pydir=$(sed -n 's/^RAYLAB_PYTHON_INSTALL_DIR:[A-Z]*=//p' "$build/CMakeCache.txt")
+  python=$(sed -n 's/^RAYLAB_PYTHON:[A-Z]*=//p' "$build/CMakeCache.txt")
+fi
 
 step "cmake --install into a fresh prefix"
 logged "$tmp/install.log" "cmake --install failed" cmake --install "$build" --prefix "$prefix"
@@ -58,6 +64,10 @@ expected_others=$(
     echo "$libdir/cmake/raylab/$f.cmake"
   done
   echo bin/raylab
+  if [ -n "$pydir" ]; then
+    for f in __init__.py __init__.pyi py.typed; do echo "$pydir/raylab/$f"; done
+    (cd "$build/python/raylab" && ls _raylab*.so | sed "s|^|$pydir/raylab/|")
+  fi
 )
 [ "$others" = "$(sort <<<"$expected_others")" ] || {
   diff <(sort <<<"$expected_others") <(echo "$others") >&2 || true
@@ -112,14 +122,7 @@ logged "$tmp/examples-configure.log" "examples/cpp does not configure" \
   -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_PREFIX_PATH="$prefix"
 grep -qx "raylab_DIR:PATH=$prefix/$libdir/cmake/raylab" "$tmp/examples/CMakeCache.txt" ||
   fail "find_package found another raylab: $(grep '^raylab_DIR' "$tmp/examples/CMakeCache.txt")"
-examples=(render_scene)
-# cast_rays uses the ray-query API (include/raylab/query/ray_query.h), whose implementation is
-# being written beside this: it is built as soon as the library defines RayQuery.
-if nm -DC --defined-only "$prefix/$libdir/libraylab.so" | grep -q 'raylab::RayQuery::from_triangles'; then
-  examples+=(cast_rays)
-else
-  echo "note: this libraylab has no RayQuery implementation yet: cast_rays is not built"
-fi
+examples=(render_scene cast_rays)
 logged "$tmp/examples-build.log" "examples/cpp does not build" cmake --build "$tmp/examples" -j 2 --target "${examples[@]}"
 
 step "render_scene demo at 64 x 48"
@@ -129,16 +132,14 @@ step "render_scene demo at 64 x 48"
 size=$(od -An -tu1 -j16 -N8 "$tmp/demo.png" | awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4 "x" $5 * 16777216 + $6 * 65536 + $7 * 256 + $8 }')
 [ "$size" = 64x48 ] || fail "demo.png is $size, not 64x48"
 
-if [[ " ${examples[*]} " == *" cast_rays "* ]]; then
-  step "cast_rays on the built-in quad and on scenes/meshes/torus.obj"
-  quad=$("$tmp/examples/cast_rays")
-  echo "$quad"
-  grep -q "^hits: *65536 of 65536" <<<"$quad" || fail "not every ray hit the quad"
-  grep -q "^distinct primitives hit: 2 of 2" <<<"$quad" || fail "the quad's two triangles were not both hit"
-  torus=$("$tmp/examples/cast_rays" "$source/scenes/meshes/torus.obj" 64)
-  echo "$torus"
-  grep -qE "^hits: *[1-9][0-9]* of 4096" <<<"$torus" || fail "no ray hit the torus"
-fi
+step "cast_rays on the built-in quad and on scenes/meshes/torus.obj"
+quad=$("$tmp/examples/cast_rays")
+echo "$quad"
+grep -q "^hits: *65536 of 65536" <<<"$quad" || fail "not every ray hit the quad"
+grep -q "^distinct primitives hit: 2 of 2" <<<"$quad" || fail "the quad's two triangles were not both hit"
+torus=$("$tmp/examples/cast_rays" "$source/scenes/meshes/torus.obj" 64)
+echo "$torus"
+grep -qE "^hits: *[1-9][0-9]* of 4096" <<<"$torus" || fail "no ray hit the torus"
 
 step "the installed raylab runs with no LD_LIBRARY_PATH, from its prefix and from a moved copy"
 for f in "$prefix/bin/raylab" "$prefix/$libdir"/libraylab*.so."$version"; do
@@ -146,7 +147,20 @@ for f in "$prefix/bin/raylab" "$prefix/$libdir"/libraylab*.so."$version"; do
 done
 readelf -d "$prefix/bin/raylab" | grep -qF "[\$ORIGIN/../$libdir]" || fail "bin/raylab has no \$ORIGIN/../$libdir RUNPATH"
 [ "$(env -i "$prefix/bin/raylab" --version)" = "raylab $version" ] || fail "installed raylab --version"
+# The installed module, with nothing but PYTHONPATH: it finds libraylab.so by its RUNPATH.
+import_check='import raylab, numpy as np
+s = raylab.Mesh(np.float32([[0, 0, 0], [1, 0, 0], [0, 1, 0]]), np.uint32([[0, 1, 2]]))
+h = s.intersect(np.float32([[0.2, 0.2, 1, 0, 0, -1]]))
+assert h["prim_id"][0] == 0 and h["t"][0] == 1, h
+print("python: raylab", raylab.__version__)'
+if [ -n "$pydir" ]; then
+  step "the installed Python module imports and answers with only PYTHONPATH set"
+  env -i PYTHONPATH="$prefix/$pydir" "$python" -c "$import_check" || fail "installed module"
+fi
 mv "$prefix" "$tmp/moved"
 [ "$(env -i "$tmp/moved/bin/raylab" --version)" = "raylab $version" ] || fail "moved raylab --version"
+if [ -n "$pydir" ]; then
+  env -i PYTHONPATH="$tmp/moved/$pydir" "$python" -c "$import_check" || fail "moved module"
+fi
 
 echo "install test: ok in $((SECONDS - start)) s"
