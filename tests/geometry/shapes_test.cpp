@@ -115,18 +115,44 @@ TEST(Triangle, BarycentricsOfKnownPoint) {
   EXPECT_TRUE(hit_triangle(tri, Ray{{0.25f, 0.5f, 1.f}, 0.f, {0.f, 0.f, -1.f}}, t, u, v, 1.f, 1.5f));
 }
 
+// A point on an edge or at a vertex belongs to exactly one of the triangles around it (the tie
+// rule of edge_with_tie_broken), so it is checked with the triangle's neighbours: the unit cells of
+// [-1, 2]^2 split like `tri` (the lower left half of cell (0, 0)) cover every point of `tri`
+// with a whole fan. A ray straight down through each vertex and through a point of each edge
+// hits exactly one of the 18 triangles, at t = 1, and the barycentrics of that triangle give the
+// point back. A lone triangle still owns some of its boundary, depending on the ray's direction:
+// for these rays, its edge p0-p1 (v = 0) and its vertex p0, but not its hypotenuse.
 TEST(Triangle, EdgeAndVertexHitsAndNearMisses) {
   const Triangle tri{{0.f, 0.f, 0.f}, {1.f, 0.f, 0.f}, {0.f, 1.f, 0.f}};
   const Vec3 down{0.f, 0.f, -1.f};
+  std::vector<Triangle> cells;
+  for (int j = -1; j <= 1; ++j)
+    for (int i = -1; i <= 1; ++i) {
+      const Vec3 o{float(i), float(j), 0.f};
+      cells.push_back({o, o + Vec3{1.f, 0.f, 0.f}, o + Vec3{0.f, 1.f, 0.f}});
+      cells.push_back({o + Vec3{1.f, 0.f, 0.f}, o + Vec3{1.f, 1.f, 0.f}, o + Vec3{0.f, 1.f, 0.f}});
+    }
+  for (const Vec3 point :
+       {tri.p0, tri.p1, tri.p2, Vec3{0.5f, 0.f, 0.f}, Vec3{0.5f, 0.5f, 0.f}, Vec3{0.f, 0.25f, 0.f}}) {
+    const Ray ray{point + Vec3{0.f, 0.f, 1.f}, 0.f, down};
+    int hits = 0;
+    for (const Triangle& cell : cells) {
+      float t, u, v;
+      if (!hit_triangle(cell, ray, t, u, v)) continue;
+      ++hits;
+      EXPECT_EQ(t, 1.f);
+      const Vec3 back = cell.p0 * (1.f - u - v) + cell.p1 * u + cell.p2 * v;
+      EXPECT_EQ(back, point) << "(" << back.x << ", " << back.y << ") for (" << point.x << ", " << point.y << ")";
+    }
+    EXPECT_EQ(hits, 1) << "(" << point.x << ", " << point.y << ")";
+  }
   float t, u, v;
   ASSERT_TRUE(hit_triangle(tri, Ray{{0.5f, 0.f, 1.f}, 0.f, down}, t, u, v));  // edge p0-p1
   EXPECT_FLOAT_EQ(v, 0.f);
-  ASSERT_TRUE(hit_triangle(tri, Ray{{0.5f, 0.5f, 1.f}, 0.f, down}, t, u, v));  // hypotenuse
-  EXPECT_FLOAT_EQ(u + v, 1.f);
-  ASSERT_TRUE(hit_triangle(tri, Ray{{0.f, 1.f, 1.f}, 0.f, down}, t, u, v));  // vertex p2
-  EXPECT_FLOAT_EQ(u, 0.f);
-  EXPECT_FLOAT_EQ(v, 1.f);
   ASSERT_TRUE(hit_triangle(tri, Ray{{0.f, 0.f, 1.f}, 0.f, down}, t, u, v));  // vertex p0
+  EXPECT_FLOAT_EQ(u, 0.f);
+  EXPECT_FLOAT_EQ(v, 0.f);
+  EXPECT_FALSE(hit_triangle(tri, Ray{{0.5f, 0.5f, 1.f}, 0.f, down}, t, u, v));  // hypotenuse: the neighbour's
   EXPECT_FALSE(hit_triangle(tri, Ray{{-1e-3f, 0.5f, 1.f}, 0.f, down}, t, u, v));
   EXPECT_FALSE(hit_triangle(tri, Ray{{0.501f, 0.5f, 1.f}, 0.f, down}, t, u, v));
   // Parallel to the plane, and a degenerate (collinear) triangle.

@@ -5,6 +5,7 @@
 /// same operations in the same order, so each lane gives bit for bit what `intersect_triangle`
 /// gives for that triangle.
 
+#include <bit>
 #include <cstdint>
 #include <limits>
 
@@ -64,7 +65,8 @@ inline TriangleBlock4 empty_triangle_block() {
 
 /// The float filter of `intersect_triangle` lane by lane, from the sheared vertices (a, b, c on
 /// the permuted x and y axes): the mask of lanes whose ray surely passes beside the triangle
-/// (see `beside_in_float`). Shared by the block and the ray-parallel kernels.
+/// (see `beside_in_float`: it decides only from exact signs that are not zero, so it agrees with
+/// the tie rule too). Shared by the block and the ray-parallel kernels.
 template <class F>
 inline auto lanes_beside(const F& ax, const F& ay, const F& bx, const F& by, const F& cx, const F& cy) {
   const F p0 = cx * by, q0 = cy * bx, p1 = ax * cy, q1 = ay * cx, p2 = bx * ay, q2 = by * ax;
@@ -73,14 +75,31 @@ inline auto lanes_beside(const F& ax, const F& ay, const F& bx, const F& by, con
   return negative & positive;
 }
 
+/// The lanes among `lanes` for which `test(lane)` holds, in scalar code.
+template <class Mask, class Test>
+inline Mask lanes_where(Mask lanes, const Test& test) {
+  Mask result = 0;
+  for (unsigned m = static_cast<unsigned>(lanes); m != 0; m &= m - 1) {
+    const int i = std::countr_zero(m);
+    if (test(i)) result |= Mask(1) << i;
+  }
+  return result;
+}
+
 /// The end of the watertight test lane by lane, shared by the block and the ray-parallel
 /// kernels, with the operations of `intersect_triangle` in its order: from the exact edge
 /// functions e0, e1, e2 and the sheared z of the vertices (az, bz, cz), the mask of the lanes
-/// among `lanes` whose ray crosses the triangle (no two signs differ, det != 0) at
-/// tmin <= t <= tmax, their t, u, v stored to t_out, u_out, v_out.
-template <class F, class Mask>
+/// among `lanes` whose ray crosses the triangle (no two signs differ, det != 0, and the tie rule
+/// does not reject it) at tmin <= t <= tmax, their t, u, v stored to t_out, u_out, v_out (other
+/// lanes' too). `rejected_by_ties(ties)` gives the lanes among `ties` (lanes hit with an edge
+/// function exactly zero) that the tie rule rejects: `tie_rule_rejects` lane by lane, in a
+/// function that is not inlined, so that the kernels stay small enough to be inlined into the
+/// traversal loops (with the loop inlined, GCC called the block test out of line: about 10% more
+/// instructions in single-ray traversal).
+template <class F, class Mask, class TieRule>
 inline Mask finish_watertight(Mask lanes, const F& e0, const F& e1, const F& e2, const F& az, const F& bz, const F& cz,
-                              const F& tmin, const F& tmax, float* t_out, float* u_out, float* v_out) {
+                              const F& tmin, const F& tmax, float* t_out, float* u_out, float* v_out,
+                              const TieRule& rejected_by_ties) {
   const F zero = F::broadcast(0.f);
   const Mask any_negative = less_mask(e0, zero) | less_mask(e1, zero) | less_mask(e2, zero);
   const Mask any_positive = less_mask(zero, e0) | less_mask(zero, e1) | less_mask(zero, e2);
@@ -95,7 +114,21 @@ inline Mask finish_watertight(Mask lanes, const F& e0, const F& e1, const F& e2,
   th.store(t_out);
   (e1 * rcp).store(u_out);
   (e2 * rcp).store(v_out);
+  // The tie rule, as in intersect_triangle, for lanes still hit with an edge function exactly
+  // zero, found as there by a zero product of the three. It can only clear lanes, and it comes
+  // after the stores so that no vector is live across its (rare) call. One compare instead of
+  // three: this runs for every block a ray hits.
+  const Mask ties = equal_mask(e0 * e1 * e2, zero) & mask;
+  if (ties != 0) [[unlikely]]
+    mask &= ~rejected_by_ties(ties);
   return mask;
+}
+
+/// The lanes among `ties` of `block` whose triangle the tie rule rejects for `wr`, for
+/// `finish_watertight`.
+[[gnu::noinline]] inline int block_lanes_rejected_by_ties(int ties, const TriangleBlock4& block,
+                                                          const WatertightRay& wr) {
+  return lanes_where(ties, [&](int lane) { return tie_rule_rejects(block.triangle(lane), wr); });
 }
 
 /// The watertight test of `intersect_triangle` on the four lanes of `block`. Returns a bit mask
@@ -126,7 +159,8 @@ inline int intersect_triangle_block(const TriangleBlock4& block, const Watertigh
   const Float4 e1 = (dax * dcy - day * dcx).to_float();
   const Float4 e2 = (dbx * day - dby * dax).to_float();
   return finish_watertight(0xF, e0, e1, e2, sz * akz, sz * bkz, sz * ckz, Float4::broadcast(tmin),
-                           Float4::broadcast(tmax), t_out, u_out, v_out);
+                           Float4::broadcast(tmax), t_out, u_out, v_out,
+                           [&](int ties) { return block_lanes_rejected_by_ties(ties, block, wr); });
 }
 
 }  // namespace raylab

@@ -46,6 +46,39 @@ inline WatertightRays<N> watertight_rays(const WatertightRay* r) {
   return w;
 }
 
+/// Ray `i` of `rays` on its own, as `WatertightRay(ray_i)` gives it (bit for bit, so the scalar
+/// code of the tie rule sees what the lanes see).
+template <int N>
+inline WatertightRay watertight_ray(const WatertightRays<N>& rays, int i) {
+  alignas(64) float lanes[6][N];
+  rays.ox.store(lanes[0]);
+  rays.oy.store(lanes[1]);
+  rays.oz.store(lanes[2]);
+  rays.sx.store(lanes[3]);
+  rays.sy.store(lanes[4]);
+  rays.sz.store(lanes[5]);
+  WatertightRay r;
+  r.kx = rays.kx;
+  r.ky = rays.ky;
+  r.kz = rays.kz;
+  r.origin[r.kx] = lanes[0][i];
+  r.origin[r.ky] = lanes[1][i];
+  r.origin[r.kz] = lanes[2][i];
+  r.sx = lanes[3][i];
+  r.sy = lanes[4][i];
+  r.sz = lanes[5][i];
+  return r;
+}
+
+/// The rays among `ties` of `rays` for which the tie rule rejects triangle `lane` of `block`, for
+/// `finish_watertight`.
+template <int N>
+[[gnu::noinline]] unsigned rays_rejected_by_ties(unsigned ties, const TriangleBlock4& block, int lane,
+                                                 const WatertightRays<N>& rays) {
+  const Triangle tri = block.triangle(lane);
+  return lanes_where(ties, [&](int i) { return tie_rule_rejects(tri, watertight_ray(rays, i)); });
+}
+
 /// Tests triangle `lane` of `block` against the N rays of `rays`, each restricted to its own
 /// [tmin, tmax] (note `<=` at both ends, as `intersect_triangle_block`: the caller applies the
 /// exact `t < tie_limit` rule). Returns the mask of rays hit, and their t, u, v in lanes of
@@ -70,7 +103,7 @@ inline unsigned intersect_triangle_rays(const TriangleBlock4& block, int lane, c
   const F e1 = difference_of_products(ax, cy, ay, cx);
   const F e2 = difference_of_products(bx, ay, by, ax);
   return finish_watertight(kAll, e0, e1, e2, rays.sz * akz, rays.sz * bkz, rays.sz * ckz, tmin, tmax, t_out, u_out,
-                           v_out);
+                           v_out, [&](unsigned ties) { return rays_rejected_by_ties(ties, block, lane, rays); });
 }
 
 }  // namespace raylab
