@@ -51,14 +51,7 @@ Film study_reference(const py::object& reference, const Scene& scene, const Acce
   if (py::isinstance<py::str>(reference) || py::hasattr(reference, "__fspath__")) {
     return load_reference_file(py::str(py::module_::import("os").attr("fspath")(reference)));
   }
-  const FloatRows rows = float_rows(reference, "reference", 3);
-  if (rows.shape.size() != 2) throw py::value_error("reference: expected shape (H, W, 3)");
-  Film film(static_cast<int>(rows.shape[1]), static_cast<int>(rows.shape[0]));
-  for (std::size_t i = 0; i < rows.count; ++i) {
-    const float* p = rows.data + static_cast<std::ptrdiff_t>(i) * rows.row_stride;
-    film.at(static_cast<int>(i % rows.shape[1]), static_cast<int>(i / rows.shape[1])) = {p[0], p[1], p[2]};
-  }
-  return film;
+  return film_of(reference, "reference");
 }
 
 py::object quality(const py::object& scene_or_path, std::optional<std::vector<std::string>> samplers,

@@ -18,6 +18,18 @@ namespace raylab::python {
 
 namespace py = pybind11;
 
+Film film_of(const py::object& image, const char* name) {
+  const FloatRows rows = float_rows(image, name, 3);
+  if (rows.shape.size() != 2) throw py::value_error(std::string(name) + ": expected shape (H, W, 3)");
+  const int height = static_cast<int>(rows.shape[0]), width = static_cast<int>(rows.shape[1]);
+  Film film(width, height);
+  for (std::size_t i = 0; i < rows.count; ++i) {
+    const float* p = rows.data + static_cast<std::ptrdiff_t>(i) * rows.row_stride;
+    film.at(static_cast<int>(i) % width, static_cast<int>(i) / width) = {p[0], p[1], p[2]};
+  }
+  return film;
+}
+
 Scene scene_of(const py::object& scene_or_path) {
   if (py::isinstance<PyScene>(scene_or_path)) {
     Scene scene = scene_or_path.cast<const PyScene&>().query.scene();
@@ -70,14 +82,7 @@ py::array_t<float> render_image(const py::object& scene_or_path, std::optional<i
 }
 
 void write(const py::object& path, const py::object& image) {
-  const FloatRows rows = float_rows(image, "image", 3);
-  if (rows.shape.size() != 2) throw py::value_error("image: expected shape (H, W, 3)");
-  const int height = static_cast<int>(rows.shape[0]), width = static_cast<int>(rows.shape[1]);
-  Film film(width, height);
-  for (std::size_t i = 0; i < rows.count; ++i) {
-    const float* p = rows.data + static_cast<std::ptrdiff_t>(i) * rows.row_stride;
-    film.at(static_cast<int>(i) % width, static_cast<int>(i) / width) = {p[0], p[1], p[2]};
-  }
+  const Film film = film_of(image, "image");
   const std::string file = py::str(py::module_::import("os").attr("fspath")(path));
   const py::gil_scoped_release released;
   write_image(film, file);

@@ -3,6 +3,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include "raylab/render/film.h"
 #include "raylab/scene/scene.h"
 
 namespace raylab::python {
@@ -11,6 +12,10 @@ namespace raylab::python {
 /// it is, and a Mesh (no lights, no camera of its own) gets a fitted camera and two lights, as a
 /// mesh file does.
 Scene scene_of(const pybind11::object& scene_or_path);
+
+/// A linear image given as an (H, W, 3) array of real numbers, as a Film. Raises ValueError
+/// naming `name` for another shape.
+Film film_of(const pybind11::object& image, const char* name);
 
 /// Adds render, write_image and pinhole_rays to `m`.
 void bind_render(pybind11::module_& m);
