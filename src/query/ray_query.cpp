@@ -15,18 +15,21 @@ RayQuery::RayQuery(RayQuery&&) noexcept = default;
 RayQuery& RayQuery::operator=(RayQuery&&) noexcept = default;
 RayQuery::~RayQuery() = default;
 
+// The scene of a mesh given as arrays: its triangles, as object 0 with one default material.
+template <class Real>
+Scene mesh_scene(std::span<const Real> vertices, std::span<const std::uint32_t> indices) {
+  Scene scene;
+  scene.geometry = geometry_from_arrays(vertices, indices);
+  scene.add_object("mesh", scene.add_material({}));
+  return scene;
+}
+
 RayQuery RayQuery::from_triangles(std::span<const float> vertices, std::span<const std::uint32_t> indices) {
-  RayQuery query;
-  query.m_state->scene.geometry = geometry_from_arrays(vertices, indices);
-  query.m_state->scene.add_object("mesh", query.m_state->scene.add_material({}));
-  return query;
+  return from_scene(mesh_scene(vertices, indices));
 }
 
 RayQuery RayQuery::from_triangles(std::span<const double> vertices, std::span<const std::uint32_t> indices) {
-  RayQuery query;
-  query.m_state->scene.geometry = geometry_from_arrays(vertices, indices);
-  query.m_state->scene.add_object("mesh", query.m_state->scene.add_material({}));
-  return query;
+  return from_scene(mesh_scene(vertices, indices));
 }
 
 RayQuery RayQuery::from_scene(Scene scene) {
