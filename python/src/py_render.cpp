@@ -12,6 +12,7 @@
 #include "raylab/io/scene_loader.h"
 #include "raylab/query/camera_rays.h"
 #include "raylab/render/film.h"
+#include "raylab/render/image_size.h"
 #include "raylab/render/renderer.h"
 
 namespace raylab::python {
@@ -47,9 +48,9 @@ py::array_t<float> render_image(const py::object& scene_or_path, std::optional<i
                                 std::optional<int> spp, std::optional<std::string> sampler, const std::string& accel,
                                 const py::object& threads) {
   Scene scene = scene_of(scene_or_path);
+  // One side given: the other follows the scene's shape; both: the view widens, never crops.
+  set_image_size(scene, width, height);
   RenderSettings& s = scene.settings;
-  if (width) s.width = *width;
-  if (height) s.height = *height;
   if (spp) s.spp = *spp;
   if (sampler) s.sampler = *sampler;
   if (s.width < 1 || s.height < 1) throw py::value_error("width, height: must be at least 1");
