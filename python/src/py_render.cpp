@@ -110,7 +110,8 @@ void bind_render(py::module_& m) {
         py::arg("height") = py::none(), py::arg("spp") = py::none(), py::arg("sampler") = py::none(),
         py::arg("accel") = "bvh", py::arg("threads") = py::none(),
         R"(Renders a scene (a Scene, a path or a built-in name) with the Whitted integrator and returns
-the linear radiance as a float32 (H, W, 3) array. Settings not given are the scene's own.
+the linear radiance as a float32 (H, W, 3) array. Settings not given are the scene's own; ``width``
+or ``height`` alone keeps the scene's shape, and both in another shape widen the view (never crop).
 ``sampler``: as the command line's --sampler. Ctrl-C interrupts (KeyboardInterrupt).)");
   m.def("write_image", &write, py::arg("path"), py::arg("image"),
         R"(Writes a linear (H, W, 3) image: PNG (8-bit sRGB), EXR (float) or PFM by the extension. The file
