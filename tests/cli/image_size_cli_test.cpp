@@ -98,6 +98,17 @@ TEST_F(Cli, ANarrowImageDoesNotCropTheFittedMesh) {
   }
 }
 
+// An animation's frames follow the rule too: every key of the camera path is framed alike.
+TEST_F(Cli, FramesFollowTheSameRule) {
+  const std::string orbit = "'" + raylab::test::source_dir() + "/scenes/orbit.json'";  // 320 x 240
+  const std::string flags = " --frames 5 --spp 1 --sampler center -q -o '";
+  ASSERT_EQ(run("render " + orbit + " --width 32" + flags + out_file("own.#.pfm") + "'").code, 0);
+  ASSERT_EQ(run("render " + orbit + " --width 32 --height 48" + flags + out_file("tall.#.pfm") + "'").code, 0);
+  const Film own = read_image(out_file("own.5.pfm")), tall = read_image(out_file("tall.5.pfm"));
+  ASSERT_EQ(own.height(), 24);
+  EXPECT_LT(window_difference(own, tall, 0, 12), 0.01);
+}
+
 // compare and quality follow the same rule as render.
 TEST_F(Cli, CompareAndQualityFollowTheSameRule) {
   const CliResult c =
