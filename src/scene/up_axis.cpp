@@ -38,9 +38,8 @@ std::array<float, 6> flat_base_fractions(const Scene& scene) {
   }
   for (int i = 0; i < 6; ++i) {
     const Vec3 axis = abs(kUpAxes[i]);
-    const double section = static_cast<double>(dot(Vec3{extent.y * extent.z, extent.z * extent.x,
-                                                        extent.x * extent.y},
-                                                   axis));
+    const double section =
+        static_cast<double>(dot(Vec3{extent.y * extent.z, extent.z * extent.x, extent.x * extent.y}, axis));
     fractions[i] = section > 0.0 ? static_cast<float>(area[i] / section) : 0.f;
   }
   return fractions;

@@ -125,7 +125,7 @@ TEST_F(CameraFlags, AnUpsideDownUpTurnsTheImageHalfWay) {
 
 TEST_F(CameraFlags, AWiderFovShowsTheMeshSmaller) {
   const std::string cube = "'" + obj("sphere.obj", sphere_obj()) + "'";
-  const int fitted = covered(render(cube, kSmall));          // 40 degrees
+  const int fitted = covered(render(cube, kSmall));              // 40 degrees
   const int wide = covered(render(cube, kSmall + " --fov 80"));  // tan 20 / tan 40: 0.43 the size
   ASSERT_GT(fitted, 100);
   EXPECT_GT(wide, 0.12 * fitted);
