@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "accel_options.h"
+#include "camera_options.h"
 #include "command_setup.h"
 #include "commands.h"
 #include "raylab/core/error.h"
@@ -17,6 +18,7 @@
 #include "raylab/io/scene_loader.h"
 #include "raylab/lab/accel_compare.h"
 #include "raylab/lab/compare_charts.h"
+#include "raylab/render/image_size.h"
 
 namespace raylab::cli {
 namespace {
@@ -31,6 +33,7 @@ struct CompareArgs {
   std::vector<std::string> accels = default_compare_accels();
   AccelArgs accel;
   std::optional<int> width, height;
+  CameraOverride camera;
   int threads = 0;
   int repeat = 3;
   std::uint64_t seed = 0;
@@ -39,14 +42,6 @@ struct CompareArgs {
   bool allow_outside_paths = false;
   bool quiet = false;
 };
-
-// The image size: as given, else 512 wide with the scene's own aspect ratio.
-void image_size(const CompareArgs& args, const RenderSettings& s, RaySetOptions& rays) {
-  const double aspect = static_cast<double>(s.height) / static_cast<double>(std::max(s.width, 1));
-  rays.width = args.width.value_or(kDefaultWidth);
-  rays.height = args.height.value_or(std::max(1, static_cast<int>(std::lround(rays.width * aspect))));
-  if (args.height && !args.width) rays.width = std::max(1, static_cast<int>(std::lround(*args.height / aspect)));
-}
 
 int run(const CompareArgs& args) {
   check_table_outputs(args.csv, args.json, args.plot);
@@ -62,9 +57,13 @@ int run(const CompareArgs& args) {
 
   LoadOptions load;
   load.allow_outside_paths = args.allow_outside_paths;
-  const Scene scene = load_scene(args.scene, load);
+  Scene scene = load_scene(args.scene, load);
   for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
-  image_size(args, scene.settings, options.rays);
+  apply_camera_override(scene, args.camera);
+  // 512 wide when neither side is given; one side given, the other follows the scene's shape.
+  set_image_size(scene, args.width || args.height ? args.width : kDefaultWidth, args.height);
+  options.rays.width = scene.settings.width;
+  options.rays.height = scene.settings.height;
 
   const CompareResult result = compare_accelerators(scene, options);
   fmt::print("{}", format_compare_table(result, args.scene));
@@ -99,6 +98,7 @@ void add_options(CLI::App& cmd, CompareArgs& args) {
   cmd.add_option("--width", args.width, "Primary rays per row (default 512)")->check(CLI::Range(1, 16384));
   cmd.add_option("--height", args.height, "Rows of primary rays (default: from the scene's aspect ratio)")
       ->check(CLI::Range(1, 16384));
+  add_camera_options(cmd, args.camera);
   add_threads_option(cmd, args.threads);
   cmd.add_option("--repeat", args.repeat, "Timed passes per ray kind; the median is reported")
       ->check(CLI::Range(1, 1000))

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "camera_options.h"
 #include "command_setup.h"
 #include "commands.h"
 #include "raylab/accel/two_level.h"
@@ -20,6 +21,7 @@
 #include "raylab/lab/quality_chart.h"
 #include "raylab/lab/quality_reference.h"
 #include "raylab/lab/quality_study.h"
+#include "raylab/render/image_size.h"
 #include "raylab/render/progress.h"
 #include "raylab/sampling/filter.h"
 
@@ -33,6 +35,7 @@ struct QualityArgs {
   std::string samplers;  // empty: all
   int seeds = 5;
   std::optional<int> width, height;
+  CameraOverride camera;
   std::optional<std::string> filter;
   std::optional<float> filter_radius;
   std::optional<float> aa_threshold;
@@ -43,21 +46,6 @@ struct QualityArgs {
   bool allow_outside_paths = false;
   bool quiet = false;
 };
-
-// The image size: as given, else the scene's; one of the two given keeps the scene's aspect.
-void image_size(const QualityArgs& args, RenderSettings& s) {
-  const double aspect = static_cast<double>(s.height) / static_cast<double>(std::max(s.width, 1));
-  if (args.width && args.height) {
-    s.width = *args.width;
-    s.height = *args.height;
-  } else if (args.width) {
-    s.width = *args.width;
-    s.height = std::max(1, static_cast<int>(std::lround(s.width * aspect)));
-  } else if (args.height) {
-    s.height = *args.height;
-    s.width = std::max(1, static_cast<int>(std::lround(s.height / aspect)));
-  }
-}
 
 // The study's options from the arguments, checked (usage errors before any work).
 QualityOptions quality_options(const QualityArgs& args) {
@@ -80,8 +68,9 @@ Scene study_scene(const QualityArgs& args) {
   load.allow_outside_paths = args.allow_outside_paths;
   Scene scene = load_scene(args.scene, load);
   for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
+  apply_camera_override(scene, args.camera);
+  set_image_size(scene, args.width, args.height);
   RenderSettings& s = scene.settings;
-  image_size(args, s);
   if (args.filter) s.filter = *args.filter;
   if (args.filter_radius) s.filter_radius = *args.filter_radius;
   if (args.aa_threshold) s.aa_threshold = *args.aa_threshold;
@@ -123,6 +112,8 @@ int run(const QualityArgs& args) {
   if (options.reference != "auto") given = load_reference_file(options.reference);
   const Scene scene = study_scene(args);
   options.reference_key = scene_source_key(args.scene);
+  // The camera flags change the reference image as much as the scene's own file would.
+  if (!args.camera.empty()) options.reference_key += " camera " + describe_camera_override(args.camera);
   const std::unique_ptr<Accelerator> accel =
       make_scene_accelerator(scene.geometry, scene.prototypes, scene.instances, SceneAccelOptions{});
   const ReferenceImage reference = study_reference(args, options, scene, *accel, given);
@@ -166,6 +157,7 @@ void add_options(CLI::App& cmd, QualityArgs& args) {
       ->capture_default_str();
   cmd.add_option("--width", args.width, "Image width (default: the scene's)")->check(CLI::Range(1, 16384));
   cmd.add_option("--height", args.height, "Image height (default: the scene's)")->check(CLI::Range(1, 16384));
+  add_camera_options(cmd, args.camera);
   cmd.add_option("--filter", args.filter,
                  "Reconstruction filter: box, tent, gaussian, mitchell (default: the scene's)");
   cmd.add_option("--filter-radius", args.filter_radius, "Filter radius in pixels; 0 = the filter's default");

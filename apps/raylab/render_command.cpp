@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "accel_options.h"
+#include "camera_options.h"
 #include "command_setup.h"
 #include "commands.h"
 #include "raylab/accel/factory.h"
@@ -260,6 +261,7 @@ void add_report_options(CLI::App& cmd, RenderArgs& args) {
 
 void add_options(CLI::App& cmd, RenderArgs& args) {
   add_image_options(cmd, args);
+  add_camera_options(cmd, args.camera);
   add_sampling_options(cmd, args);
   add_tracing_options(cmd, args);
   add_long_render_options(cmd, args);

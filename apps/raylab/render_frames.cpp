@@ -7,6 +7,7 @@
 #include <csignal>
 #include <optional>
 
+#include "camera_options.h"
 #include "raylab/core/error.h"
 #include "raylab/core/index_ranges.h"
 #include "raylab/core/interrupt.h"
@@ -107,6 +108,10 @@ int run_frames(const RenderArgs& given) {
     throw UsageError(
         "--frames renders each frame in one go: no --passes, --checkpoint or --resume (frames "
         "already written can be skipped by giving a later --frames range)");
+  }
+  if (!given.camera.empty()) {
+    throw UsageError(std::string("--frames follows the scene's camera path, and the camera flags (") + kCameraFlagList +
+                     ") set a still camera: render one view without --frames");
   }
   const auto [first_frame, last_frame] = *dist::parse_frame_range(*given.frames);
   const int first = first_frame, last = last_frame;

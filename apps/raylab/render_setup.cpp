@@ -15,6 +15,7 @@
 #include "raylab/io/file_extension.h"
 #include "raylab/io/heatmap.h"
 #include "raylab/io/image_io.h"
+#include "raylab/io/render_overrides.h"
 #include "raylab/io/scene_loader.h"
 #include "raylab/render/adaptive.h"
 #include "raylab/render/memory_limit.h"
@@ -31,11 +32,13 @@ void resume_from(RenderArgs& a, const RenderCheckpoint& saved) {
   if (a.accel_option->count() != 0) request.accel = a.accel;
   request.passes = a.passes;
   request.settings = a.settings;
+  request.camera = a.camera;
   fill_from_checkpoint(request, saved, *a.resume);
   a.scene = *request.scene;
   a.accel = request.accel.value_or(a.accel);
   a.passes = request.passes;
   a.settings = request.settings;
+  a.camera = request.camera;
 }
 
 bool wants_samples_aov(const RenderArgs& args) {
@@ -115,7 +118,7 @@ std::unique_ptr<RenderSetup> prepare_render(const RenderArgs& given, bool writes
   // Of the scene as loaded, before the command line's settings (which a checkpoint lists apart).
   const std::uint64_t fingerprint = scene_fingerprint(scene);
   RenderSettings& s = scene.settings;
-  apply_settings_override(s, args.settings);
+  apply_render_overrides(scene, args.settings, args.camera);
   setup.sampler = resolve_sampler_name(s);
   check_sampling(args, s, setup.sampler);
   setup.header =
@@ -123,6 +126,7 @@ std::unique_ptr<RenderSetup> prepare_render(const RenderArgs& given, bool writes
                        fingerprint,
                        image_settings(s, setup.sampler, RenderOptions{}.tile_size, args.passes.value_or(1), args.accel),
                        {}};
+  for (auto& camera_part : camera_settings(args.camera)) setup.header.settings.push_back(std::move(camera_part));
   if (saved) {
     check_resumable(*saved, setup.header, *args.resume);
     setup.progress = std::move(saved->progress);

@@ -12,6 +12,7 @@
 
 #include "accel_options.h"
 #include "raylab/accel/accelerator.h"
+#include "raylab/io/camera_override.h"
 #include "raylab/io/checkpoint_file.h"
 #include "raylab/render/film.h"
 #include "raylab/render/progress.h"
@@ -27,6 +28,7 @@ struct RenderArgs {
   const CLI::Option* scene_option = nullptr;  ///< to tell a scene given from the default
   std::string output = "render.png";
   SettingsOverride settings;  ///< --width, --height, --spp, --max-depth, --seed, --sampler, --filter...
+  CameraOverride camera;      ///< --up, --camera-from, --camera-at, --camera-up, --fov, --orbit
   std::vector<std::string> aovs;
   std::string accel = "bvh";
   const CLI::Option* accel_option = nullptr;  ///< to tell --accel given from the default

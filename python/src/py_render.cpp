@@ -12,6 +12,7 @@
 #include "raylab/io/scene_loader.h"
 #include "raylab/query/camera_rays.h"
 #include "raylab/render/film.h"
+#include "raylab/render/image_size.h"
 #include "raylab/render/renderer.h"
 
 namespace raylab::python {
@@ -47,9 +48,9 @@ py::array_t<float> render_image(const py::object& scene_or_path, std::optional<i
                                 std::optional<int> spp, std::optional<std::string> sampler, const std::string& accel,
                                 const py::object& threads) {
   Scene scene = scene_of(scene_or_path);
+  // One side given: the other follows the scene's shape; both: the view widens, never crops.
+  set_image_size(scene, width, height);
   RenderSettings& s = scene.settings;
-  if (width) s.width = *width;
-  if (height) s.height = *height;
   if (spp) s.spp = *spp;
   if (sampler) s.sampler = *sampler;
   if (s.width < 1 || s.height < 1) throw py::value_error("width, height: must be at least 1");
@@ -109,7 +110,8 @@ void bind_render(py::module_& m) {
         py::arg("height") = py::none(), py::arg("spp") = py::none(), py::arg("sampler") = py::none(),
         py::arg("accel") = "bvh", py::arg("threads") = py::none(),
         R"(Renders a scene (a Scene, a path or a built-in name) with the Whitted integrator and returns
-the linear radiance as a float32 (H, W, 3) array. Settings not given are the scene's own.
+the linear radiance as a float32 (H, W, 3) array. Settings not given are the scene's own; ``width``
+or ``height`` alone keeps the scene's shape, and both in another shape widen the view (never crop).
 ``sampler``: as the command line's --sampler. Ctrl-C interrupts (KeyboardInterrupt).)");
   m.def("write_image", &write, py::arg("path"), py::arg("image"),
         R"(Writes a linear (H, W, 3) image: PNG (8-bit sRGB), EXR (float) or PFM by the extension. The file

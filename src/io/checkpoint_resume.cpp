@@ -1,10 +1,14 @@
 #include "raylab/io/checkpoint_resume.h"
 
+#include <fmt/format.h>
+
 #include <exception>
+#include <stdexcept>
 #include <vector>
 
 #include "raylab/core/error.h"
 #include "raylab/io/setting_names.h"
+#include "raylab/scene/up_axis.h"
 
 namespace raylab {
 namespace {
@@ -38,6 +42,21 @@ class SavedSettings {
 
 int to_int(const std::string& v) { return std::stoi(v); }
 
+// A recorded "X,Y,Z"; throws for the caller to report, as std::stoi does.
+Vec3 to_vec3(const std::string& v) {
+  const std::optional<Vec3> p = parse_vec3(v);
+  if (!p) throw std::invalid_argument(v);
+  return *p;
+}
+
+Vec3 to_axis(const std::string& v) {
+  const std::optional<Vec3> axis = parse_up_axis(v);
+  if (!axis) throw std::invalid_argument(v);
+  return *axis;
+}
+
+float to_float(const std::string& v) { return std::stof(v); }
+
 }  // namespace
 
 void fill_from_checkpoint(ResumableRequest& r, const RenderCheckpoint& saved, const std::string& path) {
@@ -55,6 +74,26 @@ void fill_from_checkpoint(ResumableRequest& r, const RenderCheckpoint& saved, co
   from.fill(s.filter, name::kFilter);
   from.fill(s.filter_radius, name::kFilterRadius, [](const std::string& v) { return std::stof(v); });
   from.fill(r.accel, name::kAccel);
+  CameraOverride& c = r.camera;
+  from.fill(c.up_axis, name::kUpAxis, to_axis);
+  from.fill(c.from, name::kCameraFrom, to_vec3);
+  from.fill(c.at, name::kCameraAt, to_vec3);
+  from.fill(c.up, name::kCameraUp, to_vec3);
+  from.fill(c.fov_degrees, name::kFov, to_float);
+  from.fill(c.orbit_degrees, name::kOrbit, to_float);
+}
+
+std::vector<std::pair<std::string, std::string>> camera_settings(const CameraOverride& c) {
+  namespace name = setting_name;
+  std::vector<std::pair<std::string, std::string>> out;
+  // Numbers in the shortest text that reads back to the same float (fmt's default).
+  if (c.up_axis) out.emplace_back(name::kUpAxis, up_axis_name(*c.up_axis));
+  if (c.from) out.emplace_back(name::kCameraFrom, format_vec3(*c.from));
+  if (c.at) out.emplace_back(name::kCameraAt, format_vec3(*c.at));
+  if (c.up) out.emplace_back(name::kCameraUp, format_vec3(*c.up));
+  if (c.fov_degrees) out.emplace_back(name::kFov, fmt::format("{}", *c.fov_degrees));
+  if (c.orbit_degrees) out.emplace_back(name::kOrbit, fmt::format("{}", *c.orbit_degrees));
+  return out;
 }
 
 void check_resumable(const RenderCheckpoint& saved, const RenderCheckpoint& now, const std::string& path) {

@@ -65,7 +65,10 @@ class SceneReader {
       const RenderSettings settings = m_scene.settings;
       fit_camera_and_lights(m_scene);
       m_scene.settings = settings;
-      if (has_lights) m_scene.lights = lights;
+      if (has_lights) {
+        m_scene.lights = lights;
+        m_scene.lights_fitted = false;
+      }
     } else if (!has_lights && !m_borrowed) {
       root.fail("the scene has a camera but no 'lights'");
     }

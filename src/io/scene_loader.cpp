@@ -16,10 +16,32 @@
 #include "raylab/io/stl_loader.h"
 #include "raylab/scene/builtin_scenes.h"
 #include "raylab/scene/spd.h"
+#include "raylab/scene/up_axis.h"
 
 namespace raylab {
 
-void fit_camera_and_lights(Scene& scene) {
+namespace {
+
+// The directions of a mesh standing on `up`: `right`, `up` and `front` (towards the viewer of a
+// front view), right-handed as +X, +Y, +Z are for a +Y-up mesh. A +Z-up mesh faces -Y, as
+// Blender's and most CAD programs' front view shows it.
+struct MeshFrame {
+  Vec3 right, up, front;
+};
+
+MeshFrame mesh_frame(Vec3 up) {
+  Vec3 front{0.f, 0.f, 1.f};
+  if (up.y != 0.f) front = Vec3{0.f, 0.f, up.y};
+  if (up.z != 0.f) front = Vec3{0.f, -up.z, 0.f};
+  return {cross(up, front), up, front};
+}
+
+// `v` given in the frame's (right, up, front) coordinates, in world space.
+Vec3 in_frame(const MeshFrame& f, Vec3 v) { return f.right * v.x + f.up * v.y + f.front * v.z; }
+
+}  // namespace
+
+void fit_camera_and_lights(Scene& scene, std::optional<Vec3> up) {
   const Box3 box = scene.bounds();
   Vec3 center{0.f};
   float radius = 1.f;
@@ -27,24 +49,35 @@ void fit_camera_and_lights(Scene& scene) {
     center = box.center();
     radius = std::max(0.5f * length(box.extent()), 1e-6f);
   }
+  const MeshFrame frame = mesh_frame(up ? *up : detect_up_axis(scene).value_or(Vec3{0.f, 1.f, 0.f}));
   CameraSpec& cam = scene.camera;
+  cam = CameraSpec{};
   cam.vfov_degrees = 40.f;
   // Distance at which the bounding sphere just fills the vertical field of view: the sphere
   // around the box is loose already, so no further margin is needed.
   const float distance = 1.0f * radius / std::sin(cam.vfov_degrees * std::numbers::pi_v<float> / 360.f);
-  const Vec3 view_dir = normalize(Vec3{0.35f, 0.3f, 1.f});
+  const Vec3 view_dir = normalize(in_frame(frame, Vec3{0.35f, 0.3f, 1.f}));
   cam.at = center;
   cam.from = center + view_dir * distance;
-  cam.up = {0.f, 1.f, 0.f};
+  cam.up = frame.up;
 
   const Light key{.kind = Light::Kind::kPoint,
-                  .position = center + normalize(Vec3{1.f, 1.5f, 1.2f}) * (distance * 1.5f),
+                  .position = center + normalize(in_frame(frame, Vec3{1.f, 1.5f, 1.2f})) * (distance * 1.5f),
                   .intensity = {0.8f, 0.8f, 0.8f}};
   const Light fill{.kind = Light::Kind::kDirectional,
-                   .direction = normalize(Vec3{0.6f, -0.2f, -1.f}),
+                   .direction = normalize(in_frame(frame, Vec3{0.6f, -0.2f, -1.f})),
                    .intensity = {0.25f, 0.25f, 0.28f}};
   scene.lights = {key, fill};
-  scene.settings.background = {0.08f, 0.09f, 0.11f};
+  scene.camera_fitted = true;
+  scene.lights_fitted = true;
+  RenderSettings& s = scene.settings;
+  s.background = {0.08f, 0.09f, 0.11f};
+  // Whitted shading leaves what no light reaches black: a little ambient light keeps the
+  // undersides and the silhouette against the dark background readable.
+  s.ambient = Color{kMeshAmbient};
+  // Edges of a mesh are most of what its image shows: antialiased unless the caller says
+  // otherwise (the "auto" sampler jitters at more than one sample).
+  s.spp = kMeshSamplesPerPixel;
 }
 
 std::span<const std::string_view> scene_file_extensions() {
@@ -124,7 +157,10 @@ Scene load_scene(const std::string& source, const LoadOptions& options) {
     const bool has_camera = scene.camera_from_file;
     const CameraSpec camera = scene.camera;
     fit_camera_and_lights(scene);
-    if (has_camera) scene.camera = camera;
+    if (has_camera) {
+      scene.camera = camera;
+      scene.camera_fitted = false;
+    }
     return scene;
   }
   if (ext.empty() && !std::filesystem::exists(source)) {

@@ -16,6 +16,9 @@ Camera::Camera(const CameraSpec& spec, int width, int height) : m_origin(spec.fr
   if (spec.fov_span == CameraSpec::FovSpan::kPixelCentres && height > 1) {
     half_height *= static_cast<float>(height) / static_cast<float>(height - 1);
   }
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  // Narrower than framed: the horizontal extent of the framed shape stays, the vertical grows.
+  if (spec.framed_aspect > aspect) half_height *= spec.framed_aspect / aspect;
   const float half_width = half_height * static_cast<float>(width) / static_cast<float>(height);
   m_dx = right * (2.f * half_width / static_cast<float>(width));
   m_dy = up * (-2.f * half_height / static_cast<float>(height));

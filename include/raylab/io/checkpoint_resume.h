@@ -6,7 +6,10 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "raylab/io/camera_override.h"
 #include "raylab/io/checkpoint_file.h"
 #include "raylab/render/settings_override.h"
 
@@ -20,7 +23,13 @@ struct ResumableRequest {
   /// Of these the checkpoint fills width, height, spp, max depth, seed, sampler, filter and filter
   /// radius; not the adaptive samplers' parameters (a checkpoint is of a uniform sampler).
   SettingsOverride settings;
+  /// The checkpoint fills every camera part it records (camera_settings) and the request lacks.
+  CameraOverride camera;
 };
+
+/// The parts of `camera` given, as a checkpoint records them after image_settings(): only those
+/// given, so that a checkpoint without camera parts reads as it did before they existed.
+std::vector<std::pair<std::string, std::string>> camera_settings(const CameraOverride& camera);
 
 /// Fills every member of `request` not given from `saved`, the checkpoint read from `path`; a
 /// setting the checkpoint does not record stays empty. Throws InputError (`path`) when a recorded

@@ -17,5 +17,12 @@ inline constexpr char kMaxDepth[] = "max depth";          ///< ray tree depth
 inline constexpr char kTileSize[] = "tile size";          ///< tile side in pixels
 inline constexpr char kPasses[] = "passes";               ///< passes over the image
 inline constexpr char kAccel[] = "accel";                 ///< the acceleration structure
+// The camera parts given over the scene's (CameraOverride), recorded only when given.
+inline constexpr char kUpAxis[] = "up axis";          ///< --up: "z", "-y", ...
+inline constexpr char kCameraFrom[] = "camera from";  ///< --camera-from: "X,Y,Z"
+inline constexpr char kCameraAt[] = "camera at";      ///< --camera-at: "X,Y,Z"
+inline constexpr char kCameraUp[] = "camera up";      ///< --camera-up: "X,Y,Z"
+inline constexpr char kFov[] = "fov";                 ///< --fov: degrees
+inline constexpr char kOrbit[] = "orbit";             ///< --orbit: degrees
 
 }  // namespace raylab::setting_name

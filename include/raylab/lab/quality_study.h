@@ -38,8 +38,9 @@ int used_spp(std::string_view sampler, int budget);
 constexpr std::uint64_t kReferenceSeed = 0x5265666572656e63ull;  // "Referenc"
 
 /// Bumped whenever the reference rendering changes (renderer, key layout), so that references
-/// cached by an older raylab are not reused.
-constexpr int kReferenceFormatVersion = 1;
+/// cached by an older raylab are not reused. 2: fitted mesh cameras stand on the detected up axis,
+/// and an image of another shape than the scene's widens the view instead of cropping it.
+constexpr int kReferenceFormatVersion = 2;
 
 /// Progress of a study: the fraction of the work done (weighted by samples per pixel, so a
 /// 64-spp render counts 64 times a 1-spp one), and what is rendering now ("jittered 16 spp,

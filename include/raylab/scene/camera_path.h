@@ -51,8 +51,8 @@ struct CameraPath {
 
   /// The camera at `frame`: exactly a key's camera (bit for bit) at its frame; the first key's
   /// before it and the last key's after it; in between, `from`, `at` and `up` interpolated as
-  /// `interpolation` says, `vfov_degrees` and `hither` linearly, `fov_span` taken from the
-  /// earlier key. Requires keys in increasing frame order; an empty path gives `CameraSpec{}`.
+  /// `interpolation` says, `vfov_degrees` and `hither` linearly, `fov_span` and `framed_aspect`
+  /// taken from the earlier key. Requires keys in increasing frame order; an empty path gives `CameraSpec{}`.
   CameraSpec at(int frame) const { return at_time(static_cast<double>(frame)); }
   /// The camera at a fractional frame (a time inside a frame, for motion blur or sub-frames),
   /// by the same rules; at_time(f) == at(f) for every integer f.

@@ -19,6 +19,11 @@ struct CameraSpec {
   /// Distance of the near (hither) plane from the eye, along the viewing direction: eye rays
   /// start there (NFF `hither`).
   float hither = 0.f;
+  /// The width / height ratio the field of view was chosen for; 0 for the image's own. An image
+  /// narrower than this widens its vertical view so that the horizontal extent framed for this
+  /// ratio stays in the picture (set by set_image_size, raylab/render/image_size.h): a change of
+  /// image shape never crops the subject.
+  float framed_aspect = 0.f;
 };
 
 }  // namespace raylab

@@ -44,6 +44,11 @@ struct Scene {
   /// True when the camera came from the source itself (a scene file, or a glTF camera), false
   /// when it is a default that a loader may replace by one fitted to the scene's bounds.
   bool camera_from_file = false;
+  /// True when fit_camera_and_lights placed the camera (a bare mesh, a scene file without a
+  /// camera), so that a caller may place it again for another up axis.
+  bool camera_fitted = false;
+  /// True when fit_camera_and_lights placed the lights too (the scene gave none).
+  bool lights_fitted = false;
   RenderSettings settings;
   /// What loading dropped or approximated (zero-area faces, unsupported features), one line
   /// each, for the command line to show as warnings.
