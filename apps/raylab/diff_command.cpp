@@ -39,9 +39,12 @@ int run(const DiffArgs& args) {
 }
 
 void add_options(CLI::App& cmd, DiffArgs& args) {
+  cmd.option_defaults()->group("Images");
   cmd.add_option("first", args.first, "First image")->required();
   cmd.add_option("second", args.second, "Second image")->required();
+  cmd.option_defaults()->group("Threshold");
   cmd.add_option("--max-rmse", args.max_rmse, "Exit with 1 when the RMSE exceeds this")->check(CLI::NonNegativeNumber);
+  cmd.option_defaults()->group("Difference image");
   cmd.add_option("--image", args.image,
                  "Also write where the images differ: |first - second| of the display values, times --scale, "
                  "black where they agree");
