@@ -115,9 +115,11 @@ void add_options(CLI::App& cmd, CompareArgs& args) {
   cmd.option_defaults()->group("Output");
   add_table_output_options(cmd, args.csv, args.json, args.plot,
                            "Write an SVG chart of Mrays/s, build time and memory per structure");
-  cmd.add_option("--heatmaps", args.heatmaps,
-                 "Write DIR/<structure>-tests.png and -nodes.png: traversal cost per pixel of the primary rays, one "
-                 "colour scale for all structures (the folder is created if missing)");
+  cmd.add_option(
+      "--heatmaps", args.heatmaps,
+      "Write DIR/<structure>-tests.png and -nodes.png: traversal cost per pixel of the primary rays, one "
+      "colour scale for all structures, each the size of the rays' image with its legend in -tests.legend.png "
+      "(the folder is created if missing)");
   cmd.option_defaults()->group("Reporting");
   add_loading_flags(cmd, args.allow_outside_paths, args.quiet, "No progress lines on stderr");
 }

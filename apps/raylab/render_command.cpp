@@ -193,7 +193,8 @@ void add_sampling_options(CLI::App& cmd, RenderArgs& args) {
       ->check(CLI::Range(0, 8));
   cmd.add_option("--aov", args.aovs,
                  "Extra outputs: 'samples' writes the primary samples per pixel as an EXR layer (into an .exr "
-                 "output, else OUTPUT.samples.exr) and a false-colour OUTPUT.samples.png")
+                 "output, else OUTPUT.samples.exr) and a false-colour OUTPUT.samples.png the render's size, with its "
+                 "legend in OUTPUT.samples.legend.png")
       ->check(CLI::IsMember({"samples"}))
       ->delimiter(',');
 }
