@@ -20,8 +20,8 @@
 namespace raylab::cli {
 namespace {
 
-// Exit code when ours and Embree disagree on some ray (as `compare`; 3 is an internal error).
-constexpr int kDisagreementExit = 4;
+// Exit code when ours and Embree disagree on some ray (as `compare`).
+constexpr int kDisagreementExit = kExitDisagreement;
 
 struct BenchArgs {
   std::string scene;
@@ -104,6 +104,7 @@ int run(const BenchArgs& args) {
 }
 
 void add_options(CLI::App& cmd, BenchArgs& args) {
+  cmd.option_defaults()->group("Measurement");
   add_scene_argument(cmd, args.scene);
   CLI::Option* rays = cmd.add_option("--rays", args.rays, "Ray kinds to trace")
                           ->check(CLI::IsMember({"primary", "shadow", "diffuse", "all"}))
@@ -127,12 +128,14 @@ void add_options(CLI::App& cmd, BenchArgs& args) {
       ->capture_default_str();
   cmd.add_flag("--bvh-spatial-splits", args.spatial_splits,
                "Build our BVH with spatial splits (SBVH) too; Embree stays at its medium quality");
+  cmd.option_defaults()->group("Ray and hit files");
   cmd.add_option("--rays-file", args.rays_file,
                  "Trace the rays of this .rays file (closest hit, singles and packets) instead of generated ones")
       ->excludes(rays);
   cmd.add_option("--rays-out", args.rays_out, "Write the rays of the last traced set as a .rays file");
   cmd.add_option("--hits-out", args.hits_out, "Write our closest hits of the last traced set as a .hits file");
   cmd.add_option("--json", args.json, "Also write the results as JSON to this file ('-': stdout)");
+  cmd.option_defaults()->group("Reporting");
   add_loading_flags(cmd, args.allow_outside_paths, args.quiet, "No progress lines on stderr");
 }
 

@@ -8,13 +8,25 @@
 
 namespace raylab::cli {
 
+/// The exit codes of the command line, one table for every subcommand (docs/command-line.md,
+/// "Exit codes"). 0 is success.
+enum ExitCode : int {
+  kExitInputError = 1,     ///< bad input: an unreadable or malformed file, an unwritable output
+  kExitUsageError = 2,     ///< bad usage: an unknown option or name, a value out of range
+  kExitInternalError = 3,  ///< a bug
+  kExitDisagreement = 4,   ///< compare, bench: two tracers disagree on some ray
+  kExitImagesDiffer = 1,   ///< diff: the images differ by more than --max-rmse (as cmp's 1)
+  kExitCannotCompare = 5,  ///< diff: an image cannot be read, or the sizes differ
+};
+
 /// A subcommand's body, run after parsing; returns the process exit code.
 using CommandRunner = std::function<int()>;
 
 /// `raylab render [SCENE] ...`: renders a scene to an image.
 CommandRunner add_render_command(CLI::App& app);
 
-/// `raylab diff A B [--max-rmse X]`: compares two images.
+/// `raylab diff A B [--max-rmse X]`: compares two images; exits 1 when they differ by more than
+/// X, 5 when one cannot be read or their sizes differ.
 CommandRunner add_diff_command(CLI::App& app);
 
 /// `raylab info SCENE`: counts, bounds, materials, lights, camera, load time and memory.
@@ -24,7 +36,7 @@ CommandRunner add_info_command(CLI::App& app);
 CommandRunner add_convert_command(CLI::App& app);
 
 /// `raylab compare SCENE [--accels A,B,...]`: every structure on the same rays, side by side;
-/// exits 3 when two structures disagree on some ray.
+/// exits 4 when two structures disagree on some ray.
 CommandRunner add_compare_command(CLI::App& app);
 
 /// `raylab quality SCENE [--reference REF|auto] [--budgets ...]`: every sampler at every budget

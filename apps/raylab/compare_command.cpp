@@ -24,7 +24,7 @@ namespace raylab::cli {
 namespace {
 
 // Exit code when two structures disagree on some ray (after the table and the rays are printed).
-constexpr int kDisagreementExit = 4;  // 3 is an internal error (main.cpp)
+constexpr int kDisagreementExit = kExitDisagreement;
 // Width of the primary-ray image when none is given; the height follows the scene's aspect.
 constexpr int kDefaultWidth = 512;
 
@@ -88,6 +88,7 @@ int run(const CompareArgs& args) {
 }
 
 void add_options(CLI::App& cmd, CompareArgs& args) {
+  cmd.option_defaults()->group("Measurement");
   add_scene_argument(cmd, args.scene);
   std::string names;
   for (const std::string& n : args.accels) names += (names.empty() ? "" : ",") + n;
@@ -109,12 +110,17 @@ void add_options(CLI::App& cmd, CompareArgs& args) {
   cmd.add_option("--brute-limit", args.brute_limit, "Skip brute force when its estimated time exceeds this (seconds)")
       ->check(CLI::Range(0.0, 1e9))
       ->capture_default_str();
+  cmd.option_defaults()->group("Structure parameters");
   add_accel_parameter_options(cmd, args.accel);
+  cmd.option_defaults()->group("Output");
   add_table_output_options(cmd, args.csv, args.json, args.plot,
                            "Write an SVG chart of Mrays/s, build time and memory per structure");
-  cmd.add_option("--heatmaps", args.heatmaps,
-                 "Write DIR/<structure>-tests.png and -nodes.png: traversal cost per pixel of the primary rays, one "
-                 "colour scale for all structures (the folder is created if missing)");
+  cmd.add_option(
+      "--heatmaps", args.heatmaps,
+      "Write DIR/<structure>-tests.png and -nodes.png: traversal cost per pixel of the primary rays, one "
+      "colour scale for all structures, each the size of the rays' image with its legend in -tests.legend.png "
+      "(the folder is created if missing)");
+  cmd.option_defaults()->group("Reporting");
   add_loading_flags(cmd, args.allow_outside_paths, args.quiet, "No progress lines on stderr");
 }
 

@@ -58,12 +58,15 @@ int run(const ConvertArgs& args) {
 }
 
 void add_options(CLI::App& cmd, ConvertArgs& args) {
+  cmd.option_defaults()->group("Files");
   cmd.add_option("input", args.input, "Scene: built-in name, spd:NAME[?size=N], or a scene or mesh file")->required();
   cmd.add_option("output", args.output, "Output file: .nff (analytic shapes kept), .obj or .ply (tessellated)")
       ->required();
+  cmd.option_defaults()->group("Tessellation");
   cmd.add_option("--segments", args.segments, "Segments around tessellated spheres, cylinders and disks")
       ->check(CLI::Range(3, 1024))
       ->capture_default_str();
+  cmd.option_defaults()->group("Reporting");
   add_loading_flags(cmd, args.allow_outside_paths, args.quiet, "No summary");
 }
 

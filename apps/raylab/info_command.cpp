@@ -85,6 +85,7 @@ int run(const InfoArgs& args) {
 }
 
 void add_options(CLI::App& cmd, InfoArgs& args) {
+  cmd.option_defaults()->group("Scene");
   cmd.add_option("scene", args.scene, "Scene: built-in name, spd:NAME[?size=N], or a scene or mesh file")->required();
   add_allow_outside_paths_flag(cmd, args.allow_outside_paths);
 }

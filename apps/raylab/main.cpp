@@ -1,12 +1,19 @@
 // raylab command line: parses arguments, runs one subcommand, maps errors to exit codes.
 
+#include <unistd.h>
+
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "commands.h"
+#include "help_format.h"
+#include "parse_errors.h"
 #include "raylab/core/error.h"
+#include "raylab/core/terminal.h"
 #include "raylab/dist/launcher.h"
 #include "raylab/version.h"
 
@@ -14,7 +21,10 @@ int main(int argc, char** argv) {
   // A write past the file-size limit (ulimit -f) then fails with EFBIG, which the atomic writer
   // reports and cleans up after, instead of SIGXFSZ killing the process and leaving a temporary.
   std::signal(SIGXFSZ, SIG_IGN);
-  CLI::App app{"raylab: a ray tracing engine and lab for efficiency and quality"};
+  CLI::App app{"raylab: a ray tracing engine and lab for efficiency and quality", "raylab"};
+  // Before the subcommands are added: they inherit the formatter.
+  app.formatter(std::make_shared<raylab::cli::WrappingFormatter>(
+      static_cast<std::size_t>(raylab::terminal_columns(STDOUT_FILENO))));
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("raylab ") + raylab::version());
   const raylab::cli::CommandRunner run_render = raylab::cli::add_render_command(app);
@@ -24,8 +34,13 @@ int main(int argc, char** argv) {
   const raylab::cli::CommandRunner run_compare = raylab::cli::add_compare_command(app);
   const raylab::cli::CommandRunner run_quality = raylab::cli::add_quality_command(app);
   const raylab::cli::CommandRunner run_bench = raylab::cli::add_bench_command(app);
+  // Listed among the commands; `raylab help CMD` is read as `raylab CMD --help` before parsing.
+  app.add_subcommand("help", "Print this help, or a command's (raylab help render)");
+  const std::vector<std::string> args =
+      raylab::cli::expand_help_command(app, std::vector<std::string>(argv + 1, argv + argc));
   try {
-    app.parse(argc, argv);
+    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+    app.parse(reversed);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
@@ -35,9 +50,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // Under an MPI launcher every rank parses the same arguments: one message is enough.
     if (!raylab::dist::launched_by_mpi() || raylab::dist::launcher_rank() == 0) {
-      std::fprintf(stderr, "raylab: %s\nRun 'raylab --help' for usage.\n", e.what());
+      std::fputs(raylab::cli::explain_parse_error(app, e, args).c_str(), stderr);
     }
-    return 2;
+    return raylab::cli::kExitUsageError;
   }
   try {
     if (app.got_subcommand("render")) return run_render();
@@ -51,16 +66,16 @@ int main(int argc, char** argv) {
     if (!raylab::dist::launched_by_mpi() || raylab::dist::launcher_rank() == 0) {
       std::fprintf(stderr, "raylab: %s\n", e.what());
     }
-    return 2;
+    return raylab::cli::kExitUsageError;
   } catch (const raylab::InputError& e) {
     std::fprintf(stderr, "%s\n", e.what());
-    return 1;
+    return raylab::cli::kExitInputError;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "raylab: out of memory\n");
-    return 1;
+    return raylab::cli::kExitInputError;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "raylab: internal error: %s\n", e.what());
-    return 3;
+    return raylab::cli::kExitInternalError;
   }
   return 2;
 }

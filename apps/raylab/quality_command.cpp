@@ -141,6 +141,7 @@ int run(const QualityArgs& args) {
 }
 
 void add_options(CLI::App& cmd, QualityArgs& args) {
+  cmd.option_defaults()->group("Study");
   add_scene_argument(cmd, args.scene);
   cmd.add_option("--reference", args.reference,
                  "Reference image (.exr or .pfm, the study's size), or 'auto': rendered with --reference-spp "
@@ -155,6 +156,7 @@ void add_options(CLI::App& cmd, QualityArgs& args) {
   cmd.add_option("--seeds", args.seeds, "Renders per row, seeds 0..K-1 (center, regular, adaptive-corners: one)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
+  cmd.option_defaults()->group("Image and filter");
   cmd.add_option("--width", args.width, "Image width (default: the scene's)")->check(CLI::Range(1, 16384));
   cmd.add_option("--height", args.height, "Image height (default: the scene's)")->check(CLI::Range(1, 16384));
   add_camera_options(cmd, args.camera);
@@ -164,15 +166,19 @@ void add_options(CLI::App& cmd, QualityArgs& args) {
   cmd.add_option("--aa-threshold", args.aa_threshold,
                  "Adaptive samplers: colour difference that triggers refinement (default: the sampler's)")
       ->check(CLI::Range(0.f, 1.f));
+  cmd.option_defaults()->group("Reference");
   cmd.add_option("--reference-spp", args.reference_spp, "Samples per pixel of an auto reference (jittered)")
       ->check(CLI::Range(1, 65536))
       ->capture_default_str();
   cmd.add_option("--cache-dir", args.cache_dir,
                  "Folder of cached auto references (default: $XDG_CACHE_HOME/raylab/references, else "
                  "~/.cache/raylab/references)");
+  cmd.option_defaults()->group("Performance");
   add_threads_option(cmd, args.threads);
+  cmd.option_defaults()->group("Output");
   add_table_output_options(cmd, args.csv, args.json, args.plot,
                            "Write an SVG chart: RMSE against primary rays per pixel, log-log");
+  cmd.option_defaults()->group("Reporting");
   add_loading_flags(cmd, args.allow_outside_paths, args.quiet, "No progress on stderr");
 }
 

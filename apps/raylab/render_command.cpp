@@ -21,6 +21,8 @@
 #include "raylab/core/byte_size.h"
 #include "raylab/core/error.h"
 #include "raylab/core/interrupt.h"
+#include "raylab/core/terminal.h"
+#include "raylab/core/text_wrap.h"
 #include "raylab/dist/frame_range.h"
 #include "raylab/dist/launcher.h"
 #include "raylab/io/atomic_file.h"
@@ -46,16 +48,21 @@
 namespace raylab::cli {
 namespace {
 
+// One line per scene and generator, wrapped to the terminal with the descriptions hanging.
 void list_scenes() {
+  const auto width = static_cast<std::size_t>(terminal_columns(STDOUT_FILENO));
   fmt::print("built-in scenes:\n");
-  for (auto name : builtin_scene_names()) fmt::print("  {}\n", name);
+  for (const BuiltinScene& b : builtin_scenes()) {
+    fmt::print("  {:<14} {}", b.name, wrap_hanging(b.description, width, 17));
+  }
   fmt::print("SPD generators (spd:NAME or spd:NAME?size=N):\n");
   for (const SpdGenerator& g : spd_generators()) {
-    fmt::print("  spd:{:<8} size 1..{}, default {}: {}\n", g.name, g.max_size, g.default_size, g.description);
+    const std::string text = fmt::format("size 1..{}, default {}: {}", g.max_size, g.default_size, g.description);
+    fmt::print("  spd:{:<8} {}", g.name, wrap_hanging(text, width, 15));
   }
   std::string extensions;
   for (auto e : scene_file_extensions()) extensions += (extensions.empty() ? "" : " ") + std::string(e);
-  fmt::print("scene and mesh files: {}\n", extensions);
+  fmt::print("{}", wrap_hanging("scene and mesh files: " + extensions, width, 2));
 }
 
 // The SPD testing procedure: the image, the counts as a table (on stderr when the JSON goes to
@@ -149,6 +156,7 @@ int run(const RenderArgs& given) {
 
 // The scene and the image: SCENE, --output, --width, --height.
 void add_image_options(CLI::App& cmd, RenderArgs& args) {
+  cmd.option_defaults()->group("Scene and output");
   args.scene_option =
       cmd.add_option("scene", args.scene,
                      "Scene: a built-in name (demo, cornell), an SPD generator (spd:balls, spd:balls?size=6), or a "
@@ -163,6 +171,7 @@ void add_image_options(CLI::App& cmd, RenderArgs& args) {
 // Where the samples go and how they become pixels: --spp, --sampler, --filter, the adaptive
 // samplers' parameters, --aov.
 void add_sampling_options(CLI::App& cmd, RenderArgs& args) {
+  cmd.option_defaults()->group("Sampling");
   SettingsOverride& s = args.settings;
   cmd.add_option("--spp", s.spp,
                  "Samples per pixel; a count the sampler cannot use is rounded with a notice. Adaptive "
@@ -185,13 +194,15 @@ void add_sampling_options(CLI::App& cmd, RenderArgs& args) {
       ->check(CLI::Range(0, 8));
   cmd.add_option("--aov", args.aovs,
                  "Extra outputs: 'samples' writes the primary samples per pixel as an EXR layer (into an .exr "
-                 "output, else OUTPUT.samples.exr) and a false-colour OUTPUT.samples.png")
+                 "output, else OUTPUT.samples.exr) and a false-colour OUTPUT.samples.png the render's size, with its "
+                 "legend in OUTPUT.samples.legend.png")
       ->check(CLI::IsMember({"samples"}))
       ->delimiter(',');
 }
 
 // How the rays are traced: --accel and its parameters, --threads, --packets, --seed, --max-depth.
 void add_tracing_options(CLI::App& cmd, RenderArgs& args) {
+  cmd.option_defaults()->group("Structure and tracing");
   args.accel_option = cmd.add_option("--accel", args.accel, "Acceleration structure")
                           ->check(CLI::IsMember(accelerator_choices()))
                           ->capture_default_str();
@@ -212,6 +223,7 @@ void add_tracing_options(CLI::App& cmd, RenderArgs& args) {
 
 // Renders that take long or take many: --passes, checkpoints, --max-memory, --frames, MPI.
 void add_long_render_options(CLI::App& cmd, RenderArgs& args) {
+  cmd.option_defaults()->group("Long renders");
   cmd.add_option("--passes", args.passes,
                  "Take the samples in this many passes over the whole image, writing the image after each "
                  "(uniform samplers; 1 to spp)")
@@ -234,6 +246,7 @@ void add_long_render_options(CLI::App& cmd, RenderArgs& args) {
                  "Render frames A to B of the scene's camera path (A:B, or one frame A); OUTPUT gets the "
                  "frame number: a run of # in its name (frame.####.png), else before the extension")
       ->check([](const std::string& v) { return dist::parse_frame_range(v) ? "" : "expected A:B or A (0 <= A <= B)"; });
+  cmd.option_defaults()->group("Distributed (MPI)");
   cmd.add_option("--rank-timeout", args.rank_timeout,
                  "Under MPI: seconds a rank holding work may stay silent before the run fails naming it")
       ->check(CLI::Range(0.1, 1e6))
@@ -243,10 +256,12 @@ void add_long_render_options(CLI::App& cmd, RenderArgs& args) {
 // What is printed and what is allowed: --stats, --quiet, --allow-outside-paths, --list-scenes;
 // then the SPD testing procedure: --spd-protocol, --spd-facing, --json.
 void add_report_options(CLI::App& cmd, RenderArgs& args) {
+  cmd.option_defaults()->group("Reporting");
   cmd.add_flag("--stats", args.stats, "Print ray counts, traversal work and timings after the render");
   cmd.add_flag("-q,--quiet", args.quiet, "No progress bar and no summary");
   add_allow_outside_paths_flag(cmd, args.allow_outside_paths);
   cmd.add_flag("--list-scenes", args.list_scenes, "List the built-in scenes and SPD generators, then exit");
+  cmd.option_defaults()->group("SPD testing procedure");
   cmd.add_flag("--spd-protocol", args.spd_protocol,
                "Render by the SPD testing procedure (512x512, rays through pixel corners, depth 5) and print "
                "the ray counts (beside the SPD README's statistics when the scene is one of its seven at its "

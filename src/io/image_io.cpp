@@ -11,8 +11,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -156,15 +160,21 @@ Film read_exr(const std::string& path) {
     file.setFrameBuffer(fb);
     file.readPixels(dw.min.y, dw.max.y);
     return film;
-  } catch (const std::exception& e) {
-    throw InputError(path, std::string("cannot read EXR: ") + e.what());
+  } catch (const std::exception&) {
+    // The file was readable (read_image checks first); OpenEXR's reason is a paragraph.
+    throw InputError(path, "not an EXR image (or a damaged one)");
   }
 }
 
 Film read_png(const std::string& path) {
   int w = 0, h = 0, n = 0;
   unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 3);
-  if (!data) throw InputError(path, std::string("cannot read image: ") + stbi_failure_reason());
+  if (!data) {
+    // The file was readable (read_image checks first): what stb_image could not do is decode it.
+    const bool png = lowercase_extension(path) == ".png";
+    throw InputError(path, png ? "not a PNG image (or a damaged one)"
+                               : "not an image raylab reads (.png, .exr or .pfm, or another format stb_image reads)");
+  }
   Film film(w, h);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
@@ -204,7 +214,28 @@ void write_image(const Film& film, const std::string& path, std::span<const Imag
   write_file_atomically(path, bytes);
 }
 
+namespace {
+
+// "cannot read: no such file" and the like, before a decoder words it its own way (stb_image
+// says "can't fopen", OpenEXR a paragraph).
+void check_readable(const std::string& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (status.type() == std::filesystem::file_type::not_found) throw InputError(path, "cannot read: no such file");
+  if (std::filesystem::is_directory(status)) throw InputError(path, "cannot read: it is a folder");
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (f == nullptr) {
+    std::string reason = std::strerror(errno);
+    if (!reason.empty()) reason[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(reason[0])));
+    throw InputError(path, "cannot read: " + reason);
+  }
+  std::fclose(f);
+}
+
+}  // namespace
+
 Film read_image(const std::string& path) {
+  check_readable(path);
   const std::string ext = lowercase_extension(path);
   if (ext == ".pfm") return read_pfm(path);
   if (ext == ".exr") return read_exr(path);

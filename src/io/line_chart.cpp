@@ -9,6 +9,7 @@
 
 #include "raylab/io/atomic_file.h"
 #include "raylab/io/svg_chart.h"
+#include "raylab/io/svg_text.h"
 
 namespace raylab {
 namespace {
@@ -21,6 +22,9 @@ constexpr double kPlotRight = 620.0;
 constexpr double kPlotTop = 56.0;
 constexpr double kPlotBottom = 456.0;
 constexpr double kLegendLeft = 640.0;
+constexpr double kRightMargin = 24.0;
+constexpr double kTitleSize = 17.0;     // the title's font size, shrunk to fit ...
+constexpr double kMinTitleSize = 11.0;  // ... down to this one, then wrapped
 // Up to this many decades on an axis, the 2..9 sub-ticks are drawn too.
 constexpr int kMinorTickDecades = 4;
 
@@ -99,13 +103,17 @@ std::string line_chart_svg(const LineChart& chart) {
   }
   const LogAxis xa = axis_for(xmin, xmax), ya = axis_for(ymin, ymax);
   const double w = kPlotRight - kPlotLeft, h = kPlotBottom - kPlotTop;
+  // A long title is shrunk, then wrapped, and the rest of the page moved down under it.
+  const SvgTitle title = fit_svg_title(chart.title, kWidth - kPlotLeft - kRightMargin, kTitleSize, kMinTitleSize);
+  const double extra = title.extra_height();
   std::string out = fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
       "font-family=\"sans-serif\">\n"
-      "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      "<text x=\"{2}\" y=\"30\" font-size=\"17\" font-weight=\"bold\">{3}</text>\n",
-      kWidth, kHeight, kPlotLeft, xml_escape(chart.title));
+      "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
+      kWidth, kHeight + extra);
+  out += svg_title_element(title, kPlotLeft, 30.0);
+  if (extra > 0.0) out += fmt::format("<g transform=\"translate(0 {})\">\n", extra);
   append_grid(out, xa, ya);
   out += fmt::format("<text x=\"{:.1f}\" y=\"{}\" font-size=\"13\" text-anchor=\"middle\">{}</text>\n",
                      (kPlotLeft + kPlotRight) / 2.0, kPlotBottom + 42.0, xml_escape(chart.x_label));
@@ -142,6 +150,7 @@ std::string line_chart_svg(const LineChart& chart) {
         kLegendLeft, ly, kLegendLeft + 28.0, ly, colour, dash_attr, kLegendLeft + 14.0, ly, colour, kLegendLeft + 36.0,
         ly + 4.0, xml_escape(s.name));
   }
+  if (extra > 0.0) out += "</g>\n";
   return out + "</svg>\n";
 }
 

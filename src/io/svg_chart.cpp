@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "raylab/io/atomic_file.h"
+#include "raylab/io/svg_text.h"
 
 namespace raylab {
 namespace {
@@ -17,8 +18,10 @@ constexpr double kTitleHeight = 44.0;
 constexpr double kPanelHeight = 300.0;
 constexpr double kPlotLeft = 74.0;
 constexpr double kPlotRight = kWidth - 24.0;
-constexpr double kPlotTop = 44.0;      // below the panel's top
-constexpr double kPlotBottom = 250.0;  // below the panel's top; group labels go under it
+constexpr double kTitleSize = 18.0;     // the chart title's font size, shrunk to fit ...
+constexpr double kMinTitleSize = 11.0;  // ... down to this one, then wrapped
+constexpr double kPlotTop = 44.0;       // below the panel's top
+constexpr double kPlotBottom = 250.0;   // below the panel's top; group labels go under it
 
 // Series colours: well apart in hue and lightness, readable on white.
 constexpr std::array<const char*, 6> kPalette = {"#3b528b", "#21918c", "#8fd14f", "#e07b39", "#b5367a", "#6b6b6b"};
@@ -120,16 +123,19 @@ std::string xml_escape(std::string_view text) {
 }
 
 std::string bar_chart_svg(std::string_view title, std::span<const BarPanel> panels) {
-  const double height = kTitleHeight + kPanelHeight * static_cast<double>(panels.size());
+  // A long title (a scene's path) is shrunk, then wrapped, and the panels moved down under it.
+  const SvgTitle fitted = fit_svg_title(title, kWidth - kPlotLeft - (kWidth - kPlotRight), kTitleSize, kMinTitleSize);
+  const double title_height = kTitleHeight + fitted.extra_height();
+  const double height = title_height + kPanelHeight * static_cast<double>(panels.size());
   std::string out = fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
       "font-family=\"sans-serif\">\n"
-      "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      "<text x=\"{2}\" y=\"28\" font-size=\"18\" font-weight=\"bold\">{3}</text>\n",
-      kWidth, height, kPlotLeft, xml_escape(title));
+      "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
+      kWidth, height);
+  out += svg_title_element(fitted, kPlotLeft, 28.0);
   for (std::size_t i = 0; i < panels.size(); ++i) {
-    append_panel(out, panels[i], kTitleHeight + kPanelHeight * static_cast<double>(i));
+    append_panel(out, panels[i], title_height + kPanelHeight * static_cast<double>(i));
   }
   return out + "</svg>\n";
 }

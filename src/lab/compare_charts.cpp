@@ -59,14 +59,14 @@ std::vector<std::string> write_compare_heatmaps(const CompareResult& result, con
   for (const AccelMeasure& m : result.accels) {
     if (m.skipped || !m.has_counts || m.pixel_tests.empty()) continue;
     const std::string base = (std::filesystem::path(dir) / m.name).string();
-    const Rgb8Image t = render_heatmap(m.pixel_tests, result.width, result.height, tests,
-                                       m.name + ": primitive tests per pixel, log scale");
-    write_png(t, base + "-tests.png");
-    written.push_back(base + "-tests.png");
-    const Rgb8Image n = render_heatmap(m.pixel_nodes, result.width, result.height, nodes,
-                                       m.name + ": nodes or cells per pixel, log scale");
-    write_png(n, base + "-nodes.png");
-    written.push_back(base + "-nodes.png");
+    auto write = [&](std::span<const std::uint32_t> values, const HeatScale& scale, const std::string& what,
+                     const std::string& suffix) {
+      const std::vector<std::string> paths = write_heatmap_png(
+          values, result.width, result.height, scale, m.name + ": " + what + " per pixel, log scale", base + suffix);
+      written.insert(written.end(), paths.begin(), paths.end());
+    };
+    write(m.pixel_tests, tests, "primitive tests", "-tests.png");
+    write(m.pixel_nodes, nodes, "nodes or cells", "-nodes.png");
   }
   return written;
 }

@@ -9,12 +9,31 @@
 namespace raylab {
 namespace {
 
-constexpr std::array<std::string_view, 8> kNames = {"demo",         "cornell",       "aa-checker", "aa-lines",
-                                                    "aa-zoneplate", "aa-highlights", "aa-edges",   "aa-whitted"};
+// One line each for --list-scenes (at most 63 characters, to fit 80 columns beside the names):
+// what the scene shows; AA charts are the antialiasing scenes of `raylab quality`.
+constexpr std::array<BuiltinScene, 8> kScenes = {{
+    {"demo", "Whitted revisited: mirror, glass and Phong spheres, a torus"},
+    {"cornell", "the Cornell box: published sizes, colours and area light"},
+    {"aa-checker", "AA chart: a checkerboard to the horizon (moire)"},
+    {"aa-lines", "AA chart: thin lines 0.1 to 1.5 px wide and a Siemens star"},
+    {"aa-zoneplate", "AA chart: a zone plate, rings up to 0.75 cycles per pixel"},
+    {"aa-highlights", "AA chart: tiny shiny spheres and sub-pixel emissive dots"},
+    {"aa-edges", "AA chart: long straight edges at high and low contrast"},
+    {"aa-whitted", "AA chart: Whitted's mirror and glass spheres with shadows"},
+}};
+
+// The names alone, in the same order, for builtin_scene_names().
+constexpr std::array<std::string_view, kScenes.size()> kNames = [] {
+  std::array<std::string_view, kScenes.size()> names{};
+  for (std::size_t i = 0; i < kScenes.size(); ++i) names[i] = kScenes[i].name;
+  return names;
+}();
 
 }  // namespace
 
 std::span<const std::string_view> builtin_scene_names() { return kNames; }
+
+std::span<const BuiltinScene> builtin_scenes() { return kScenes; }
 
 bool is_builtin_scene(std::string_view name) {
   for (auto n : kNames) {

@@ -171,8 +171,8 @@ TEST_F(Cli, DiffExitCodes) {
   write_image(dark, d);
   EXPECT_EQ(run("diff '" + d + "' '" + d + "' --max-rmse 0").code, 0);
 
-  EXPECT_EQ(run("diff '" + a + "' '" + small + "'").code, 1);  // sizes differ
-  EXPECT_EQ(run("diff '" + a + "' '" + (work() / "missing.pfm").string() + "'").code, 1);
+  EXPECT_EQ(run("diff '" + a + "' '" + small + "'").code, 5);  // sizes differ: cannot compare
+  EXPECT_EQ(run("diff '" + a + "' '" + (work() / "missing.pfm").string() + "'").code, 5);
   EXPECT_EQ(run("diff '" + a + "' '" + b + "' --max-rmse -1").code, 2);
 
   // --image writes where they differ (here everywhere, white); an unwritable one is refused first.
@@ -180,7 +180,7 @@ TEST_F(Cli, DiffExitCodes) {
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(image_rmse(read_image(out_file("d.png")), white), 0.0);
   r = run("diff '" + a + "' '" + b + "' --image '" + out_file("none/d.png") + "'");
-  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(r.code, 5) << r.err;
   EXPECT_EQ(r.out.find("rmse"), std::string::npos) << r.out;
 }
 

@@ -65,10 +65,11 @@ TEST_F(Cli, CompareWritesHeatmapsPlotCsvAndJson) {
           out_file("t.json") + "'");
   ASSERT_EQ(r.code, 0) << r.err << r.out;
   EXPECT_TRUE(r.err.empty()) << r.err;  // -q
-  for (const char* name : {"bvh-tests.png", "bvh-nodes.png", "brute-tests.png", "brute-nodes.png"}) {
-    const Film f = read_image(maps + "/" + name);
-    EXPECT_GE(f.width(), 160) << name;  // widened for the legend
-    EXPECT_GT(f.height(), 30) << name;
+  for (const char* name : {"bvh-tests", "bvh-nodes", "brute-tests", "brute-nodes"}) {
+    const Film f = read_image(maps + "/" + name + ".png");
+    EXPECT_EQ(f.width(), 40) << name;  // the size of the rays' image, to lay over it
+    EXPECT_EQ(f.height(), 30) << name;
+    EXPECT_TRUE(fs::exists(maps + "/" + name + ".legend.png")) << name;
   }
   const std::string svg = read_text(out_file("chart.svg"));
   EXPECT_TRUE(svg.starts_with("<?xml")) << svg.substr(0, 100);

@@ -1,5 +1,6 @@
 // The false-colour sample-count image: colours placed by the linear or log scale between the
-// smallest and largest count, a legend that shows that range, and the PNG written atomically.
+// smallest and largest count, exactly the render's size, a legend that shows that range, and the
+// PNGs written atomically.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -7,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "legend_text.h"
 #include "raylab/core/error.h"
 #include "raylab/io/heatmap.h"
 #include "raylab/io/image_io.h"
@@ -16,30 +18,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr Rgb8 kInk{235, 235, 235};
+using test::shows_text;
 
-// True when `text`, drawn by draw_text at font scale `s`, appears in the legend strip below
-// row `top` as a whole word (no ink right before or after it).
-bool legend_shows(const Rgb8Image& img, int top, std::string_view text, int s) {
-  const int w = text_width(text, s), h = 5 * s;
-  Rgb8Image stamp(w, h);
-  draw_text(stamp, 0, 0, text, kInk, s);
-  for (int y = top; y + h <= img.height; ++y) {
-    for (int x = 0; x + w <= img.width; ++x) {
-      bool match = true;
-      for (int sy = 0; sy < h && match; ++sy) {
-        for (int sx = 0; sx < w && match; ++sx) match = (img.at(x + sx, y + sy) == kInk) == (stamp.at(sx, sy) == kInk);
-      }
-      for (int sy = 0; sy < h && match; ++sy) {
-        for (int d = 1; d <= 2 * s && match; ++d) {  // the gap between glyphs and the next glyph's edge
-          if (x - d >= 0) match = !(img.at(x - d, y + sy) == kInk);
-          if (match && x + w - 1 + d < img.width) match = !(img.at(x + w - 1 + d, y + sy) == kInk);
-        }
-      }
-      if (match) return true;
-    }
-  }
-  return false;
+// The legend of `counts` as write_sample_count_png draws it beside a map `width` wide.
+Rgb8Image legend_of(const std::vector<std::uint32_t>& counts, CountScale scale, int width) {
+  return render_heat_legend(sample_count_scale(counts, scale), sample_count_title(scale), width);
 }
 
 // Counts 4 .. 64 over a 40 x 20 image: left half 4, then a ramp of values to 64.
@@ -55,17 +38,18 @@ std::vector<std::uint32_t> counts() {
 TEST(SampleCountImage, LinearScaleRunsFromTheSmallestToTheLargestCount) {
   const std::vector<std::uint32_t> c = counts();
   const Rgb8Image img = render_sample_count_image(c, 40, 20, CountScale::kLinear);
-  ASSERT_GE(img.width, 160);  // widened for the legend
-  ASSERT_EQ(img.height, 20 + legend_height(1));
+  ASSERT_EQ(img.width, 40);  // the render's size, to lay over it
+  ASSERT_EQ(img.height, 20);
   EXPECT_EQ(img.at(0, 0), heat_colour(1.f));  // 64
   EXPECT_EQ(img.at(1, 0), heat_colour(0.f));  // 4
   for (int x = 20; x < 40; ++x) {
     const double v = c[std::size_t(x)];
     EXPECT_EQ(img.at(x, 0), heat_colour(static_cast<float>((v - 4.0) / 60.0))) << x;
   }
-  EXPECT_TRUE(legend_shows(img, 20, "4", 1));
-  EXPECT_TRUE(legend_shows(img, 20, "64", 1));
-  EXPECT_TRUE(legend_shows(img, 20, "PRIMARY SAMPLES PER PIXEL, LINEAR SCALE", 1));
+  const Rgb8Image legend = legend_of(c, CountScale::kLinear, 40);
+  EXPECT_TRUE(shows_text(legend, 0, "4", kLegendFontScale));
+  EXPECT_TRUE(shows_text(legend, 0, "64", kLegendFontScale));
+  EXPECT_TRUE(shows_text(legend, 0, "PRIMARY SAMPLES PER PIXEL, LINEAR SCALE", kLegendFontScale));
 }
 
 TEST(SampleCountImage, LogScaleSpreadsTheLowCounts) {
@@ -78,9 +62,10 @@ TEST(SampleCountImage, LogScaleSpreadsTheLowCounts) {
   // 7 samples (3 above the least) sit far further up the map than on the linear scale.
   const HeatScale log_scale{64.0, true, 4.0}, linear_scale{64.0, false, 4.0};
   EXPECT_GT(log_scale.position(7.0), 2.f * linear_scale.position(7.0));
-  EXPECT_TRUE(legend_shows(img, 20, "4", 1));
-  EXPECT_TRUE(legend_shows(img, 20, "64", 1));
-  EXPECT_TRUE(legend_shows(img, 20, "PRIMARY SAMPLES PER PIXEL, LOG SCALE", 1));
+  const Rgb8Image legend = legend_of(c, CountScale::kLog, 40);
+  EXPECT_TRUE(shows_text(legend, 0, "4", kLegendFontScale));
+  EXPECT_TRUE(shows_text(legend, 0, "64", kLegendFontScale));
+  EXPECT_TRUE(shows_text(legend, 0, "PRIMARY SAMPLES PER PIXEL, LOG SCALE", kLegendFontScale));
 }
 
 TEST(SampleCountImage, AUniformCountIsOneColourAgainstZero) {
@@ -89,17 +74,21 @@ TEST(SampleCountImage, AUniformCountIsOneColourAgainstZero) {
   for (int y = 0; y < 30; ++y) {
     for (int x = 0; x < 50; ++x) ASSERT_EQ(img.at(x, y), heat_colour(1.f));
   }
-  EXPECT_TRUE(legend_shows(img, 30, "0", 1));
-  EXPECT_TRUE(legend_shows(img, 30, "16", 1));
+  const Rgb8Image legend = legend_of(c, CountScale::kLinear, 50);
+  EXPECT_TRUE(shows_text(legend, 0, "0", kLegendFontScale));
+  EXPECT_TRUE(shows_text(legend, 0, "16", kLegendFontScale));
   EXPECT_THROW(render_sample_count_image(c, 50, 31), std::invalid_argument);
 }
 
-TEST(SampleCountImage, LargeImagesUseTheDoubleFont) {
-  const std::vector<std::uint32_t> c(400 * 10, 3);
-  const Rgb8Image img = render_sample_count_image(c, 400, 10);
-  EXPECT_EQ(img.width, 400);
-  EXPECT_EQ(img.height, 10 + legend_height(2));
-  EXPECT_TRUE(legend_shows(img, 10, "3", 2));
+TEST(SampleCountImage, LegendIsAsWideAsAWideMap) {
+  const std::vector<std::uint32_t> c(700 * 10, 3);
+  const Rgb8Image img = render_sample_count_image(c, 700, 10);
+  EXPECT_EQ(img.width, 700);
+  EXPECT_EQ(img.height, 10);
+  const Rgb8Image legend = legend_of(c, CountScale::kLog, 700);
+  EXPECT_EQ(legend.width, 700);  // can be set under the map
+  EXPECT_EQ(legend.height, heat_legend_height());
+  EXPECT_TRUE(shows_text(legend, 0, "3", kLegendFontScale));
 }
 
 TEST(SampleCountImage, PngIsWrittenAtomicallyWithTheImagesColours) {
@@ -108,7 +97,8 @@ TEST(SampleCountImage, PngIsWrittenAtomicallyWithTheImagesColours) {
   fs::create_directories(dir);
   const std::vector<std::uint32_t> c = counts();
   const std::string path = (dir / "spp.png").string();
-  write_sample_count_png(c, 40, 20, path, CountScale::kLinear);
+  const std::vector<std::string> written = write_sample_count_png(c, 40, 20, path, CountScale::kLinear);
+  EXPECT_EQ(written, (std::vector<std::string>{path, (dir / "spp.legend.png").string()}));
   const Film f = read_image(path);
   const Rgb8Image img = render_sample_count_image(c, 40, 20, CountScale::kLinear);
   ASSERT_EQ(f.width(), img.width);
@@ -123,7 +113,7 @@ TEST(SampleCountImage, PngIsWrittenAtomicallyWithTheImagesColours) {
   EXPECT_THROW(write_sample_count_png(c, 40, 20, (dir / "no" / "spp.png").string()), InputError);
   std::size_t files = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++files;
-  EXPECT_EQ(files, 1u);  // no temporary left behind
+  EXPECT_EQ(files, 2u);  // the map and its legend; no temporary left behind
   fs::remove_all(dir);
 }
 

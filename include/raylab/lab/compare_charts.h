@@ -20,8 +20,10 @@ void write_compare_chart(const CompareResult& result, const std::string& scene_n
 
 /// Writes the heat maps of a comparison into `dir` (created if missing): for each structure
 /// that ran and counts its work, `<name>-tests.png` (primitive tests per primary ray) and
-/// `<name>-nodes.png` (nodes or cells visited), each kind on one scale shared by all
-/// structures. Returns the paths written. Throws InputError when the folder cannot be made.
+/// `<name>-nodes.png` (nodes or cells visited), each the size of the comparison's image, each
+/// kind on one scale shared by all structures, each with its legend beside it
+/// (`<name>-tests.legend.png`). Returns the paths written. Throws InputError when the folder
+/// cannot be made.
 std::vector<std::string> write_compare_heatmaps(const CompareResult& result, const std::string& dir);
 
 }  // namespace raylab

@@ -9,6 +9,15 @@
 
 namespace raylab {
 
+/// A built-in scene's name and what it shows.
+struct BuiltinScene {
+  std::string_view name;         ///< "demo", "cornell", ...
+  std::string_view description;  ///< one line for --list-scenes
+};
+
+/// The built-in scenes, in the order of builtin_scene_names().
+std::span<const BuiltinScene> builtin_scenes();
+
 /// Names of the built-in scenes.
 std::span<const std::string_view> builtin_scene_names();
 
