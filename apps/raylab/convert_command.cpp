@@ -66,6 +66,7 @@ int run(const ConvertArgs& args) {
   if (ext == ".json") {
     SceneJsonFiles files = encode_scene_json(scene, stem);
     for (const SidecarFile& mesh : files.meshes) write_text(beside(args.output, mesh.name), mesh.bytes);
+    for (const SidecarFile& image : files.textures) write_text(beside(args.output, image.name), image.bytes);
     bytes = std::move(files.json);
   } else if (ext == ".nff") {
     // NFF keeps spheres and cones analytic.

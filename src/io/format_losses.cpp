@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <functional>
 
+#include "raylab/io/texture_io.h"
+
 namespace raylab {
 namespace {
 
@@ -68,10 +70,16 @@ void add_if(std::vector<std::string>& out, std::size_t n, const std::string& ite
   if (n > 0) out.push_back(item);
 }
 
-// Textures no written format can name: an image has no file name left, a zone plate no syntax.
-void add_texture_losses(std::vector<std::string>& out, const Scene& scene, bool checker_kept) {
+// Textures a format cannot carry: a zone plate has no syntax anywhere; an image has no file
+// name left, so only a scene file, which writes it as a PNG beside it, keeps one (when 8 bits
+// give its texels back); a checker only a scene file.
+void add_texture_losses(std::vector<std::string>& out, const Scene& scene, bool scene_file) {
+  const bool checker_kept = scene_file;
   const auto& ms = scene.materials;
-  const std::size_t images = count_if(ms, [](const Material& m) { return m.texture.kind == Texture::Kind::kImage; });
+  const std::size_t images = count_if(ms, [&](const Material& m) {
+    if (m.texture.kind != Texture::Kind::kImage) return false;
+    return !scene_file || m.texture.image == nullptr || !encode_texture_png(*m.texture.image);
+  });
   const std::size_t plates =
       count_if(ms, [](const Material& m) { return m.texture.kind == Texture::Kind::kZonePlate; });
   const std::size_t checkers =

@@ -2,10 +2,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <map>
+
 #include "raylab/core/error.h"
 #include "raylab/io/float_text.h"
 #include "raylab/io/mtl_writer.h"
 #include "raylab/io/ply_writer.h"
+#include "raylab/io/texture_io.h"
 
 namespace raylab {
 namespace {
@@ -119,7 +122,25 @@ void render(JsonText& j, const RenderSettings& s) {
   j.close('}');
 }
 
-void materials(JsonText& j, const Scene& scene, const std::vector<std::string>& names) {
+// The file each image texture is written to, by image; images 8 bits cannot give back are
+// left out. Each image once, however many materials share it.
+using TextureFiles = std::map<const TextureImage*, std::string>;
+
+TextureFiles texture_files(const Scene& scene, const std::string& stem, std::vector<SidecarFile>& files) {
+  TextureFiles names;
+  for (const Material& m : scene.materials) {
+    const TextureImage* image = m.texture.kind == Texture::Kind::kImage ? m.texture.image.get() : nullptr;
+    if (image == nullptr || names.count(image) > 0) continue;
+    const std::optional<std::vector<unsigned char>> png = encode_texture_png(*image);
+    if (!png) continue;
+    SidecarFile file{stem + ".tex" + std::to_string(files.size()) + ".png", std::string(png->begin(), png->end())};
+    names[image] = file.name;
+    files.push_back(std::move(file));
+  }
+  return names;
+}
+
+void materials(JsonText& j, const Scene& scene, const std::vector<std::string>& names, const TextureFiles& textures) {
   j.key("materials").open('{', true);
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
@@ -130,6 +151,9 @@ void materials(JsonText& j, const Scene& scene, const std::vector<std::string>& 
     if (m.texture.kind == Texture::Kind::kChecker) {
       j.key("texture").open('{').key("type").string("checker").key("color2").vec(m.texture.color2);
       j.key("scale").number(m.texture.scale).close('}');
+    } else if (const auto it = textures.find(m.texture.image.get());
+               m.texture.kind == Texture::Kind::kImage && it != textures.end()) {
+      j.key("texture").open('{').key("type").string("image").key("file").string(it->second).close('}');
     }
     j.close('}');
   }
@@ -245,7 +269,7 @@ SceneJsonFiles encode_scene_json(const Scene& scene, const std::string& stem) {
   j.key("description").string("written by raylab convert");
   camera(j, scene);
   render(j, scene.settings);
-  materials(j, scene, names);
+  materials(j, scene, names, texture_files(scene, stem, files.textures));
   lights(j, scene.lights);
   j.key("objects").open('[', true);
   ObjectWriter objects(j, scene, names);

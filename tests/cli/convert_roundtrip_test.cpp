@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "../test_paths.h"
 #include "cli_fixture.h"
 #include "raylab/io/mtl_writer.h"
 #include "raylab/io/scene_loader.h"
@@ -101,6 +102,20 @@ TEST_F(ConvertCli, SceneFileKeepsShadingNormalsAndWritesOneSidecarPerRunOfTriang
   const std::string json = read_text(out() / "tp.json");
   EXPECT_NE(json.find("\"file\": \"tp.0.ply\""), std::string::npos) << json;
   EXPECT_TRUE(fs::exists(out() / "tp.0.ply"));
+}
+
+// Every shipped scene, the textured one included (its image goes to a PNG beside the scene
+// file), converts to a scene file that renders the same image, with no warning.
+TEST_F(ConvertCli, ShippedScenesConvertToSceneFilesThatRenderTheSameImage) {
+  for (const std::string name : {"shapes", "instances", "textured", "whitted", "orbit"}) {
+    SCOPED_TRACE(name);
+    const std::string source = raylab::test::source_dir() + "/scenes/" + name + ".json";
+    EXPECT_EQ(convert(source, name + ".json"), "");
+    EXPECT_TRUE(render(source, name + "-a.png") == render(out_file(name + ".json"), name + "-b.png"));
+  }
+  EXPECT_TRUE(fs::exists(out() / "textured.tex0.png"));
+  EXPECT_NE(read_text(out() / "textured.json").find(R"("texture": {"type": "image", "file": "textured.tex0.png"})"),
+            std::string::npos);
 }
 
 TEST_F(ConvertCli, ObjOutputWritesItsMtlAndReadsBackWithTheSameMaterials) {

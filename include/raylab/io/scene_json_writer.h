@@ -17,8 +17,9 @@ struct SidecarFile {
 
 /// A scene file and the mesh files it refers to.
 struct SceneJsonFiles {
-  std::string json;                 ///< the scene file's text
-  std::vector<SidecarFile> meshes;  ///< binary PLY files named by its `mesh` objects
+  std::string json;                   ///< the scene file's text
+  std::vector<SidecarFile> meshes;    ///< binary PLY files named by its `mesh` objects
+  std::vector<SidecarFile> textures;  ///< PNG files named by its image textures
 };
 
 /// `scene` as a raylab scene file that reads back to the same scene: camera (and camera path),
@@ -28,8 +29,10 @@ struct SceneJsonFiles {
 /// consecutive triangles of one object, placed without a transform: PLY keeps float32 vertices,
 /// shading normals and texture coordinates exactly, where the scene format's `triangle` objects
 /// carry no normals, and the runs keep the triangles in their order, which the structures
-/// built over them and so the image depend on. What the format cannot carry is left out (image
-/// and zone-plate textures; format_losses() names them). `scene` must hold no instances
+/// built over them and so the image depend on. Image textures go to PNG sidecars
+/// `<stem>.tex<k>.png`, one per image, when 8 bits give their texels back exactly
+/// (encode_texture_png()). What the format cannot carry is left out (other image textures,
+/// zone plates; format_losses() names them). `scene` must hold no instances
 /// (bake_instances() first); throws UsageError otherwise.
 SceneJsonFiles encode_scene_json(const Scene& scene, const std::string& stem);
 
