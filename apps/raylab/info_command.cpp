@@ -8,8 +8,10 @@
 
 #include "command_setup.h"
 #include "commands.h"
+#include "raylab/core/byte_size.h"
 #include "raylab/core/stopwatch.h"
 #include "raylab/io/scene_loader.h"
+#include "raylab/scene/scene_memory.h"
 
 namespace raylab::cli {
 namespace {
@@ -35,6 +37,16 @@ const char* light_kind(Light::Kind k) {
   return "?";
 }
 
+// What the scene's data occupies (info builds no accelerator, so none is counted): the bytes in
+// use, exact for scripts, then by part, then what loading reserved beyond them.
+void print_memory(const SceneMemory& m) {
+  fmt::print("memory      {} in use ({} bytes; no accelerator built)\n", human_bytes(m.used()), m.used());
+  fmt::print("            geometry {}, normals and uvs {}, objects {}, materials {}, lights {}, textures {}\n",
+             human_bytes(m.geometry), human_bytes(m.shading), human_bytes(m.objects), human_bytes(m.materials),
+             human_bytes(m.lights), human_bytes(m.textures));
+  if (m.reserved > 0) fmt::print("            {} more allocated but unused\n", human_bytes(m.reserved));
+}
+
 int run(const InfoArgs& args) {
   LoadOptions load;
   load.allow_outside_paths = args.allow_outside_paths;
@@ -46,7 +58,7 @@ int run(const InfoArgs& args) {
   const Geometry& g = scene.geometry;
   fmt::print("scene       {}\n", args.scene);
   fmt::print("load time   {:.3f} s\n", seconds);
-  fmt::print("memory      {:.2f} MiB (scene arrays; accelerators not built)\n", scene.memory_bytes() / 1048576.0);
+  print_memory(scene_memory(scene));
   fmt::print("primitives  {}\n", scene.primitive_count());
   if (!scene.instances.empty()) {
     std::uint64_t stored = 0;

@@ -1,7 +1,10 @@
 #include "json_document.h"
 
+#include "json_syntax_error.h"
+
 #include <algorithm>
 #include <iterator>
+#include <optional>
 #include <vector>
 
 #include "raylab/core/error.h"
@@ -38,24 +41,6 @@ struct CountingIterator {
   }
   bool operator==(const CountingIterator& o) const { return p == o.p; }
   bool operator!=(const CountingIterator& o) const { return p != o.p; }
-};
-
-// Maps byte offsets to line and column.
-class LineIndex {
- public:
-  explicit LineIndex(std::string_view text) {
-    m_starts.push_back(0);
-    for (std::size_t i = 0; i < text.size(); ++i)
-      if (text[i] == '\n') m_starts.push_back(i + 1);
-  }
-  TextPosition at(std::size_t offset) const {
-    const auto it = std::upper_bound(m_starts.begin(), m_starts.end(), offset);
-    const std::size_t line = static_cast<std::size_t>(it - m_starts.begin());  // >= 1
-    return {static_cast<int>(line), static_cast<int>(offset - m_starts[line - 1]) + 1};
-  }
-
- private:
-  std::vector<std::size_t> m_starts;
 };
 
 constexpr std::size_t kMaxDepth = 64;
@@ -99,18 +84,22 @@ class PositionSax {
     // nlohmann's message starts "[json.exception.parse_error.101] parse error at line L, column C: ".
     std::string message = e.what();
     if (const auto colon = message.find(": "); colon != std::string::npos) message = message.substr(colon + 2);
-    if (message.starts_with("syntax error while parsing ")) message = message.substr(27);
     (void)token;
-    // `position` counts the characters read, the offending one included.
-    const TextPosition pos = m_lines.at(std::min(position > 0 ? position - 1 : 0, m_text.size()));
-    throw InputError(m_doc.file(), pos.line, pos.col, "JSON " + message);
+    std::optional<OpenContainer> open;
+    if (!m_stack.empty()) {
+      const Frame& f = m_stack.back();
+      open = OpenContainer{f.value->is_object(), f.open_offset, f.key, f.name};
+    }
+    throw_json_syntax_error(m_text, m_lines, m_doc.file(), position, std::move(message), open);
   }
 
  private:
   struct Frame {
     json* value;
     std::string pointer;
-    std::string key;  // object frames: the key whose value comes next
+    std::string key;              // object frames: the key whose value comes next
+    std::size_t open_offset = 0;  // of the opening bracket
+    std::string name;             // its key in the parent object, if it has one
   };
 
   // Where the next value goes: its slot in the parent, and its JSON pointer.
@@ -140,7 +129,8 @@ class PositionSax {
     *v = std::move(container);
     // Object members are recorded at their key already; array elements and the root here.
     m_doc.record(pointer, m_lines.at(*m_consumed - 1));
-    m_stack.push_back({v, pointer, {}});
+    const bool member = !m_stack.empty() && m_stack.back().value->is_object();
+    m_stack.push_back({v, pointer, {}, *m_consumed - 1, member ? m_stack.back().key : std::string()});
     return true;
   }
 

@@ -9,6 +9,8 @@
 #include <numeric>
 #include <vector>
 
+#include "raylab/io/float_text.h"
+
 namespace raylab {
 namespace {
 
@@ -35,22 +37,8 @@ class NffWriter {
 
  private:
   // Appends `v` so that parse_nff, which reads a double and rounds it to float, gets `v` back
-  // bit for bit. The shortest float form is read back that way: rounding the decimal to double
-  // first could in principle land on the midpoint between two floats, though a sample of 70
-  // million floats found no case. The check keeps the guarantee local rather than argued; where
-  // it fails, the shortest double form of the same value (which reads back exactly) is written.
-  void number(float v) {
-    std::array<char, 64> buf;
-    auto result = std::to_chars(buf.data(), buf.data() + buf.size(), v);
-    if (std::isfinite(v)) {
-      double back = 0.0;
-      std::from_chars(buf.data(), result.ptr, back);
-      if (static_cast<float>(back) != v) {
-        result = std::to_chars(buf.data(), buf.data() + buf.size(), static_cast<double>(v));
-      }
-    }
-    m_out.append(buf.data(), result.ptr);
-  }
+  // bit for bit.
+  void number(float v) { append_float_text(m_out, v); }
 
   void integer(long long v) {
     std::array<char, 24> buf;

@@ -311,7 +311,10 @@ class ObjMaterials {
   void read_libraries(const std::string& obj_text) {
     std::vector<std::string> seen;
     for (const FileRef& ref : mtllib_refs(obj_text)) {
-      const std::string path = resolve_reference(ref.name, m_obj_path, ref.at, "material library");
+      // A missing library is a missing optional part: its faces get the default material.
+      const std::string path =
+          resolve_reference(ref.name, m_obj_path, ref.at, "material library", "; its faces use the default material");
+      if (path.empty()) continue;
       const std::string canonical = canonical_key(path);
       if (std::find(seen.begin(), seen.end(), canonical) != seen.end()) continue;
       seen.push_back(canonical);
@@ -359,9 +362,10 @@ class ObjMaterials {
   }
 
   // The path of `reference`, relative to the OBJ's folder; an InputError at `at` of file `in`
-  // when it leaves that folder (unless allowed) or is not a file.
+  // when it leaves that folder (unless allowed). When it is not a file: empty, after a warning
+  // at `at` that ends with `consequence`.
   std::string resolve_reference(const std::string& reference, const std::string& in, Location at,
-                                const std::string& what) const {
+                                const std::string& what, const std::string& consequence) const {
     const std::string path = resolve_scene_path(m_folder, reference, m_options.allow_outside_paths);
     if (path.empty()) {
       throw InputError(in, at.line, at.col,
@@ -370,7 +374,9 @@ class ObjMaterials {
     }
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) {
-      throw InputError(in, at.line, at.col, what + " '" + reference + "' not found (looked for " + path + ")");
+      m_scene.warnings.push_back(in + ":" + std::to_string(at.line) + ":" + std::to_string(at.col) + ": " + what +
+                                 " '" + reference + "' not found (looked for " + path + ")" + consequence);
+      return {};
     }
     return path;
   }
@@ -404,7 +410,9 @@ class ObjMaterials {
 
     Material out;
     out.name = m.name;
-    const bool textured = !m.diffuse_texname.empty();
+    // A texture that is missing leaves the material untextured (a warning says so).
+    const std::shared_ptr<const TextureImage> image = m.diffuse_texname.empty() ? nullptr : texture(m, block);
+    const bool textured = image != nullptr;
     if (statement(block, "Kd") != nullptr) {
       out.color = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
     } else if (textured) {
@@ -419,7 +427,7 @@ class ObjMaterials {
     out.emission = {std::max(0.f, m.emission[0]), std::max(0.f, m.emission[1]), std::max(0.f, m.emission[2])};
     // illum 3 to 7 are the models with ray-traced reflection; Ks is their mirror colour.
     if (m.illum >= 3 && m.illum <= 7) out.reflectivity = out.ks;
-    if (textured) out.texture = Texture::from_image(texture(m, block));
+    if (textured) out.texture = Texture::from_image(image);
     return out;
   }
 
@@ -427,7 +435,9 @@ class ObjMaterials {
     const MtlStatement* s = statement(block, "map_Kd");
     const std::string in = s != nullptr ? block->file : m_obj_path;
     const Location at = s != nullptr ? Location{s->at.line, s->last_word_col} : Location{};
-    const std::string path = resolve_reference(m.diffuse_texname, in, at, "texture");
+    const std::string path =
+        resolve_reference(m.diffuse_texname, in, at, "texture", "; material '" + m.name + "' renders without it");
+    if (path.empty()) return nullptr;
     const std::string key = canonical_key(path);
     if (const auto it = m_textures.find(key); it != m_textures.end()) return it->second;
     try {

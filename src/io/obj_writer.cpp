@@ -1,34 +1,29 @@
 #include "raylab/io/obj_writer.h"
 
-#include <charconv>
-
 #include "raylab/core/error.h"
+#include "raylab/io/float_text.h"
+#include "raylab/io/mtl_writer.h"
 
 namespace raylab {
 namespace {
-
-// Shortest text that reads back to the same float.
-void append_float(std::string& out, float v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, r.ptr);
-}
 
 void append_vec(std::string& out, const char* keyword, std::initializer_list<float> values) {
   out += keyword;
   for (const float v : values) {
     out += ' ';
-    append_float(out, v);
+    append_float_text(out, v);
   }
   out += '\n';
 }
 
 }  // namespace
 
-std::string encode_obj(const Scene& scene) {
+std::string encode_obj(const Scene& scene, const std::string& mtl_file) {
   const Geometry& g = scene.geometry;
   if (g.size() != g.triangles.size()) throw UsageError("OBJ output needs a triangle-only scene (tessellate first)");
   std::string out = "# written by raylab\n";
+  if (!mtl_file.empty()) out += "mtllib " + mtl_file + "\n";
+  const std::vector<std::string> material_names = export_material_names(scene);
   const bool normals = !g.triangle_normals.empty();
   const bool uvs = !g.triangle_uvs.empty();
   std::uint32_t current = kInvalidId;
@@ -39,7 +34,7 @@ std::string encode_obj(const Scene& scene) {
       current = object;
       out += "o " + (object < scene.objects.size() ? scene.objects[object].name : "object") + "\n";
       if (object < scene.objects.size() && scene.objects[object].material < scene.materials.size()) {
-        out += "usemtl " + scene.materials[scene.objects[object].material].name + "\n";
+        out += "usemtl " + material_names[scene.objects[object].material] + "\n";
       }
     }
     const Triangle& t = g.triangles[i];

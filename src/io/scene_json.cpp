@@ -1,6 +1,7 @@
 #include "raylab/io/scene_json.h"
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <optional>
@@ -130,13 +131,26 @@ class SceneReader {
       const std::string reference = t.string("file");
       const std::string path = resolve_scene_path(m_base_dir, reference, m_options.allow_outside_paths);
       if (path.empty()) t.fail_at("file", outside_message(reference));
-      mat.texture = Texture::from_image(load_texture(path));
+      try {
+        mat.texture = Texture::from_image(load_texture(path));
+      } catch (const InputError&) {
+        check_exists(t, reference, path, "texture");
+        throw;
+      }
       return;
     }
     t.check_keys({"type", "color2", "scale"});
     mat.texture.kind = Texture::Kind::kChecker;
     mat.texture.color2 = t.color("color2", mat.texture.color2);
     mat.texture.scale = t.real("scale", mat.texture.scale, kPositive);
+  }
+
+  // Fails at `n`'s "file" when `path` is not a file: a missing file is a mistake in the scene
+  // file, reported at the reference (the file's own name could not say which line wanted it).
+  static void check_exists(const Node& n, const std::string& reference, const std::string& path, const char* what) {
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(path, ec)) return;
+    n.fail_at("file", std::string(what) + " file '" + reference + "' not found (looked for " + path + ")");
   }
 
   static std::string outside_message(const std::string& reference) {
@@ -200,6 +214,9 @@ class SceneReader {
     } catch (const UsageError& e) {
       // An extension no loader reads is a mistake in this file, at this reference.
       n.fail_at("file", e.what());
+    } catch (const InputError&) {
+      check_exists(n, reference, path, "mesh");
+      throw;  // an error inside the mesh file, at its own line and column
     }
   }
 

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <climits>
+#include <cmath>
 #include <cstring>
 #include <optional>
 #include <type_traits>
@@ -19,6 +20,7 @@
 #include "raylab/core/error.h"
 #include "raylab/io/image_io.h"
 #include "raylab/io/read_file.h"
+#include "raylab/render/film.h"
 
 namespace raylab {
 namespace {
@@ -175,6 +177,23 @@ std::shared_ptr<const TextureImage> decode_texture(std::span<const unsigned char
 std::shared_ptr<const TextureImage> load_texture(const std::string& path) {
   const std::string bytes = read_file(path);
   return decode_texture(std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()), path);
+}
+
+std::optional<std::vector<unsigned char>> encode_texture_png(const TextureImage& image) {
+  const std::array<float, 256>& table = srgb8_to_linear_table();
+  Film film(image.width(), image.height());
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x) {
+      const Color c = image.texel(x, y);
+      for (int k = 0; k < 3; ++k) {
+        // The 8-bit value the PNG writer will store must decode to this very float.
+        const long code = std::lround(linear_to_srgb(c[k]) * 255.f);
+        if (code < 0 || code > 255 || table[static_cast<std::size_t>(code)] != c[k]) return std::nullopt;
+      }
+      film.at(x, y) = c;
+    }
+  }
+  return encode_image(film, ".png");
 }
 
 }  // namespace raylab

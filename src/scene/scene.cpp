@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "raylab/core/error.h"
+#include "raylab/scene/scene_memory.h"
 
 namespace raylab {
 
@@ -89,29 +90,6 @@ SurfaceInteraction surface_at(const Scene& scene, const Ray& ray, const Hit& hit
   return si;
 }
 
-namespace {
-
-template <class T>
-std::size_t bytes_of(const std::vector<T>& v) {
-  return v.capacity() * sizeof(T);
-}
-
-// Bytes held by a geometry's arrays.
-std::size_t geometry_bytes(const Geometry& g) {
-  return bytes_of(g.triangles) + bytes_of(g.spheres) + bytes_of(g.cylinders) + bytes_of(g.disks) + bytes_of(g.quads) +
-         bytes_of(g.triangle_objects) + bytes_of(g.sphere_objects) + bytes_of(g.cylinder_objects) +
-         bytes_of(g.disk_objects) + bytes_of(g.quad_objects) + bytes_of(g.triangle_normals) + bytes_of(g.triangle_uvs);
-}
-
-}  // namespace
-
-std::size_t Scene::memory_bytes() const {
-  std::size_t n = geometry_bytes(geometry);
-  for (const Geometry& p : prototypes) n += geometry_bytes(p);
-  n += bytes_of(instances);
-  n += bytes_of(objects) + bytes_of(materials) + bytes_of(lights);
-  for (const SceneObject& o : objects) n += o.name.capacity();
-  return n;
-}
+std::size_t Scene::memory_bytes() const { return scene_memory(*this).used(); }
 
 }  // namespace raylab

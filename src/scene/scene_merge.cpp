@@ -40,8 +40,17 @@ void append_geometry(Geometry& out, const Geometry& g, const Transform& placemen
                      const std::vector<std::uint32_t>& object_map) {
   const std::optional<double> scale = similarity_scale(placement);
   const bool mirror = placement.determinant() < 0.0;
+  // Without a transform the numbers are kept as they are: re-normalising a shading normal (or
+  // turning -0 into +0) would change bits, and a scene written by `raylab convert` must read
+  // back to the same image.
+  const bool identity = placement.m == Transform::identity().m;
   for (std::size_t i = 0; i < g.triangles.size(); ++i) {
     const Triangle& t = g.triangles[i];
+    if (identity) {
+      out.add(t, g.triangle_normals.empty() ? nullptr : &g.triangle_normals[i],
+              g.triangle_uvs.empty() ? nullptr : &g.triangle_uvs[i], object_map[g.triangle_objects[i]]);
+      continue;
+    }
     Triangle p{placement.point(t.p0), placement.point(t.p1), placement.point(t.p2)};
     const std::array<Vec3, 3>* normals = nullptr;
     std::array<Vec3, 3> n{};

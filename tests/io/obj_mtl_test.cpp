@@ -200,12 +200,23 @@ TEST_F(ObjMtl, MapKdIsAnImageTextureMultiplyingKd) {
   EXPECT_EQ(plain.texture.image, painted.texture.image);
 }
 
-TEST_F(ObjMtl, MissingLibraryIsAnErrorAtItsName) {
-  expect_error(std::string("# header\nmtllib  there.mtl missing.mtl\n") + kTriangle + "f 1 2 3\n", "", 2, 9,
-               "material library 'there.mtl' not found");
+// A missing library is a missing optional part of the model: a warning at its name, and the
+// faces load with the default material.
+TEST_F(ObjMtl, MissingLibraryIsAWarningAtItsNameAndTheFacesStillLoad) {
+  const std::string obj = std::string("# header\nmtllib  there.mtl missing.mtl\n") + kTriangle + "f 1 2 3\n";
+  load(obj);
+  ASSERT_EQ(m_scene.warnings.size(), 2u);
+  EXPECT_EQ(m_scene.warnings[0].rfind(m_path + ":2:9: material library 'there.mtl' not found (looked for ", 0), 0u)
+      << m_scene.warnings[0];
+  EXPECT_TRUE(m_scene.warnings[0].ends_with("); its faces use the default material")) << m_scene.warnings[0];
+  EXPECT_EQ(m_scene.geometry.triangles.size(), 1u);
+  EXPECT_EQ(m_scene.geometry.triangle_objects[0], m_object);
+  m_scene.warnings.clear();
   write("there.mtl", "newmtl a\n");
-  expect_error(std::string("# header\nmtllib  there.mtl missing.mtl\n") + kTriangle + "f 1 2 3\n", "", 2, 19,
-               "material library 'missing.mtl' not found");
+  load(obj);
+  ASSERT_EQ(m_scene.warnings.size(), 1u);
+  EXPECT_NE(m_scene.warnings[0].find(":2:19: material library 'missing.mtl' not found"), std::string::npos)
+      << m_scene.warnings[0];
 }
 
 TEST_F(ObjMtl, LibraryOutsideTheFolderIsRefused) {
@@ -234,8 +245,16 @@ TEST_F(ObjMtl, TextureErrorsArePlacedInTheMtlFile) {
   const std::string mtl = write("m.mtl", "newmtl a\nKd 1 1 1\n\n  map_Kd ../outside.png\n");
   const std::string obj = std::string("mtllib m.mtl\n") + kTriangle + "usemtl a\nf 1 2 3\n";
   expect_error(obj, mtl, 4, 10, "texture '../outside.png' is outside the folder");
+  // A missing texture is a warning at the map_Kd that names it; the material renders without it.
   write("m.mtl", "newmtl a\nmap_Kd nowhere.png\n");
-  expect_error(obj, mtl, 2, 8, "texture 'nowhere.png' not found");
+  load(obj);
+  ASSERT_EQ(m_scene.warnings.size(), 1u);
+  EXPECT_EQ(m_scene.warnings[0].rfind(mtl + ":2:8: texture 'nowhere.png' not found (looked for ", 0), 0u)
+      << m_scene.warnings[0];
+  EXPECT_TRUE(m_scene.warnings[0].ends_with("; material 'a' renders without it")) << m_scene.warnings[0];
+  EXPECT_EQ(material_of_triangle(m_scene.geometry.triangles.size() - 1).texture.kind, Texture::Kind::kNone);
+  m_scene = Scene{};
+  m_object = m_scene.add_object("model", m_scene.add_material(Material{}));
   write("bad.png", "not a picture");
   write("m.mtl", "newmtl a\nmap_Kd bad.png\n");
   expect_error(obj, mtl, 2, 8, "not a PNG or JPEG image");

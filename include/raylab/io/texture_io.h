@@ -5,8 +5,10 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "raylab/scene/texture_image.h"
 
@@ -30,5 +32,10 @@ std::shared_ptr<const TextureImage> load_texture(const std::string& path);
 /// `file` and start with `element` ("images[2]"), when given.
 std::shared_ptr<const TextureImage> decode_texture(std::span<const unsigned char> bytes, const std::string& file,
                                                    const std::string& element = "");
+
+/// PNG bytes (8-bit sRGB, as image_io writes a PNG) that load_texture() reads back to exactly
+/// `image`'s texels, or nothing when some texel is not an 8-bit sRGB value (those of a 16-bit
+/// PNG), which an 8-bit file cannot give back. For writing a scene's textures beside it.
+std::optional<std::vector<unsigned char>> encode_texture_png(const TextureImage& image);
 
 }  // namespace raylab

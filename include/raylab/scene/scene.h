@@ -58,7 +58,8 @@ struct Scene {
   std::uint32_t add_material(Material m);
   /// Adds an object using material `material`; returns its id (to tag primitives with).
   std::uint32_t add_object(std::string name, std::uint32_t material);
-  /// Bytes held by the scene's arrays (geometry, objects, materials, lights; not textures).
+  /// Bytes of the scene's data in use, textures included: scene_memory(*this).used() (see
+  /// scene_memory.h for the parts and the capacity reserved beyond them).
   std::size_t memory_bytes() const;
   /// Places prototype `prototype` under `to_world` (invertible), its objects starting at
   /// `first_object`; returns the instance index. Throws UsageError when the global id space

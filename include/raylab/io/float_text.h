@@ -1,0 +1,17 @@
+#pragma once
+/// \file
+/// Decimal text for floats that every raylab reader turns back into the same float.
+
+#include <string>
+
+namespace raylab {
+
+/// The shortest decimal text of `v` that reads back to `v` bit for bit, both when parsed as a
+/// float and when parsed as a double and then rounded to float (as the NFF and JSON readers
+/// do). Non-finite values are written as to_chars writes them ("inf", "nan").
+std::string float_text(float v);
+
+/// Appends float_text(v) to `out` (no allocation for the common case).
+void append_float_text(std::string& out, float v);
+
+}  // namespace raylab
