@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "raylab/core/error.h"
+#include "raylab/core/thread_count.h"
 #include "raylab/io/atomic_file.h"
 
 namespace raylab::cli {
@@ -12,7 +13,15 @@ void add_scene_argument(CLI::App& cmd, std::string& scene) {
 }
 
 void add_threads_option(CLI::App& cmd, int& threads, const std::string& description) {
-  cmd.add_option("--threads", threads, description)->check(CLI::Range(0, 1024))->capture_default_str();
+  // The library caps the threads at the cores (usable_threads); the user hears of it once, here.
+  cmd.add_option("--threads", threads, description)
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str()
+      ->each([](const std::string& value) {
+        if (const std::string note = thread_count_notice(std::stoi(value)); !note.empty()) {
+          fmt::print(stderr, "note: {}\n", note);
+        }
+      });
 }
 
 void check_table_outputs(const std::string& csv, const std::string& json, const std::string& plot) {

@@ -24,7 +24,8 @@ CommandRunner add_command(CLI::App& app, const std::string& name, const std::str
 /// Adds the required SCENE argument of the commands that measure a scene (compare, quality, bench).
 void add_scene_argument(CLI::App& cmd, std::string& scene);
 
-/// Adds --threads (0 to 1024, 0 = all cores), described by `description`.
+/// Adds --threads (0 to 1024, 0 = all cores), described by `description`. A count above this
+/// machine's cores gets one note on stderr (the library uses the cores there are).
 void add_threads_option(CLI::App& cmd, int& threads, const std::string& description = "Worker threads; 0 = all cores");
 
 /// Usage and input errors about the table outputs of compare and quality, before the work: a

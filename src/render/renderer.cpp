@@ -10,6 +10,7 @@
 
 #include "packet_tracing.h"
 #include "raylab/core/error.h"
+#include "raylab/core/thread_count.h"
 #include "raylab/render/adaptive.h"
 #include "raylab/render/camera.h"
 #include "raylab/sampling/filter.h"
@@ -117,9 +118,7 @@ void check_adaptive_options(const std::string& sampler, const RenderOptions& opt
 
 }  // namespace
 
-int render_thread_count(const RenderOptions& options) {
-  return options.threads > 0 ? options.threads : tbb::info::default_concurrency();
-}
+int render_thread_count(const RenderOptions& options) { return usable_threads(options.threads); }
 
 std::string resolve_sampler_name(const RenderSettings& settings) {
   if (settings.sampler == "auto") return settings.spp <= 1 ? "center" : "jittered";
