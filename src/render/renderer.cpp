@@ -70,7 +70,8 @@ RenderResult render_uniform(const Scene& scene, const Accelerator& accel, Film& 
   const auto start = std::chrono::steady_clock::now();
   for (int pass = progress.passes_done; pass < progress.passes; ++pass) {
     const int first = progress.samples_before(pass), end = progress.samples_before(pass + 1);
-    const std::vector<int> todo = progress.unfinished_tiles();
+    const std::vector<int> todo =
+        options.scattered_tiles ? scattered_tile_order(progress.unfinished_tiles()) : progress.unfinished_tiles();
     workers.for_each(static_cast<int>(todo.size()), [&](int k, const TraceContext& ctx) {
       if (stopped.load(std::memory_order_relaxed) || (options.should_stop && options.should_stop())) {
         stopped.store(true, std::memory_order_relaxed);
