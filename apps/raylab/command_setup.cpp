@@ -33,6 +33,12 @@ void check_table_outputs(const std::string& csv, const std::string& json, const 
   }
 }
 
+void check_not_inputs(const Scene& scene, std::initializer_list<const std::string*> outputs) {
+  for (const std::string* path : outputs) {
+    if (!path->empty() && *path != "-") check_not_an_input(*path, scene.source_files);
+  }
+}
+
 void add_table_output_options(CLI::App& cmd, std::string& csv, std::string& json, std::string& plot,
                               const std::string& plot_description) {
   cmd.add_option("--csv", csv, "Also write the table as CSV to this file");

@@ -63,6 +63,7 @@ int run(const CompareArgs& args) {
   LoadOptions load;
   load.allow_outside_paths = args.allow_outside_paths;
   const Scene scene = load_scene(args.scene, load);
+  check_not_inputs(scene, {&args.csv, &args.json, &args.plot});
   for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
   image_size(args, scene.settings, options.rays);
 

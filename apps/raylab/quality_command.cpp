@@ -122,6 +122,7 @@ int run(const QualityArgs& args) {
   std::optional<Film> given;
   if (options.reference != "auto") given = load_reference_file(options.reference);
   const Scene scene = study_scene(args);
+  check_not_inputs(scene, {&args.csv, &args.json, &args.plot});
   options.reference_key = scene_source_key(args.scene);
   const std::unique_ptr<Accelerator> accel =
       make_scene_accelerator(scene.geometry, scene.prototypes, scene.instances, SceneAccelOptions{});

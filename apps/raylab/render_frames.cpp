@@ -20,11 +20,14 @@
 namespace raylab::cli {
 namespace {
 
-// prepare_render, with the first frame's file checked on rank 0 and a scene without a camera
-// path refused.
-std::unique_ptr<RenderSetup> prepare_frames(const RenderArgs& given, bool root, int first) {
+// prepare_render, with the first frame's file checked on rank 0 (and every frame's against the
+// scene's own files) and a scene without a camera path refused.
+std::unique_ptr<RenderSetup> prepare_frames(const RenderArgs& given, bool root, int first, int last) {
   if (root) check_writable(dist::frame_output(given.output, first));
   std::unique_ptr<RenderSetup> prepared = prepare_render(given, false);
+  for (int frame = first; root && frame <= last; ++frame) {
+    check_not_an_input(dist::frame_output(given.output, frame), prepared->scene.source_files);
+  }
   if (prepared->scene.camera_path.empty()) {
     throw UsageError("--frames needs a camera path, and the scene '" + given.scene +
                      "' has none (a scene file's \"camera\": {\"path\": ...}; see docs/scene-format.md)");
@@ -114,7 +117,7 @@ int run_frames(const RenderArgs& given) {
   dist::ProcessChannel process;
   dist::Channel& channel = process.channel();
   return prepare_then_render(
-      channel, [&](bool root) { return prepare_frames(given, root, first); },
+      channel, [&](bool root) { return prepare_frames(given, root, first, last); },
       [&](RenderSetup& setup, bool root) { return render_frames(setup, root, channel, process.host(), first, last); });
 }
 
