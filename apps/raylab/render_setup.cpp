@@ -99,11 +99,20 @@ void show_progress(const RenderArgs& args, RenderOptions& options, std::optional
   if (bar) options.on_progress = [&bar](int done, int total) { bar->update(done, total); };
 }
 
-void write_each_pass(const RenderArgs& args, RenderOptions& options) {
-  options.on_pass = [&args, passes = options.passes, interactive = stderr_interactive()](int done, const Film& image) {
+void write_each_pass(RenderSetup& setup, RenderOptions& options) {
+  options.on_pass = [&setup, passes = options.passes, interactive = stderr_interactive()](int done, const Film& image) {
+    const RenderArgs& args = setup.args;
+    // A whole image of this render (every pixel has the first pass's samples): from here on the
+    // output holds this render's image, and an interrupted render may update it in place.
     write_image(image, args.output);
+    setup.output_written = true;
     if (!args.quiet) fmt::print(stderr, "{}pass {}/{}: wrote {}\n", interactive ? "\n" : "", done, passes, args.output);
   };
+}
+
+void end_at_once() noexcept {
+  ProgressBar::end_line_now();
+  remove_pending_temporary_files();
 }
 
 bool saves_checkpoints(const RenderArgs& args) { return args.checkpoint || args.resume; }
@@ -119,6 +128,8 @@ std::unique_ptr<RenderSetup> prepare_render(const RenderArgs& given, bool writes
     resume_from(args, *saved);
   }
   check_outputs(args, writes_outputs);
+  std::error_code ec;
+  setup.output_existed = writes_outputs && std::filesystem::exists(args.output, ec);
   LoadOptions load;
   load.allow_outside_paths = args.allow_outside_paths;
   setup.scene = load_scene(args.scene, load);
