@@ -4,6 +4,7 @@
 
 #include "raylab/core/error.h"
 #include "raylab/core/thread_count.h"
+#include "raylab/dist/launcher.h"
 #include "raylab/io/atomic_file.h"
 
 namespace raylab::cli {
@@ -13,11 +14,13 @@ void add_scene_argument(CLI::App& cmd, std::string& scene) {
 }
 
 void add_threads_option(CLI::App& cmd, int& threads, const std::string& description) {
-  // The library caps the threads at the cores (usable_threads); the user hears of it once, here.
+  // The library caps the threads at the cores (usable_threads); the user hears of it once, here
+  // (under MPI from rank 0 only, as every rank would say the same).
   cmd.add_option("--threads", threads, description)
       ->check(CLI::Range(0, 1024))
       ->capture_default_str()
       ->each([](const std::string& value) {
+        if (dist::launched_by_mpi() && dist::launcher_rank() != 0) return;
         if (const std::string note = thread_count_notice(std::stoi(value)); !note.empty()) {
           fmt::print(stderr, "note: {}\n", note);
         }
