@@ -14,10 +14,10 @@ echo "| spp | threads | render seconds | Mrays/s |"
 echo "|---|---|---|---|"
 for spp in 1 16; do
   for threads in 1 2; do
-    # The summary line on stderr (not a terminal here) carries the time and the ray rate.
+    # The one summary line on stderr ("wrote ... rays at R Mrays/s, ...) in Ts") carries both.
     line=$("$raylab" render demo --width 1280 --height 720 --spp "$spp" --threads "$threads" -o "$out/demo.pfm" 2>&1 >/dev/null | tail -n 1)
     secs=$(sed -E 's/.* in ([0-9.]+)s$/\1/; s/.* in ([0-9]+m[0-9]+s)$/\1/' <<<"$line")
-    mrays=$(sed -E 's/.*\(([0-9.]+) Mrays\/s\).*/\1/' <<<"$line")
+    mrays=$(sed -E 's/.* ([0-9.]+) Mrays\/s.*/\1/' <<<"$line")
     echo "| $spp | $threads | $secs | $mrays |"
   done
 done

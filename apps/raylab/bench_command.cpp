@@ -70,6 +70,7 @@ int run(const BenchArgs& args) {
   LoadOptions load;
   load.allow_outside_paths = args.allow_outside_paths;
   const Scene scene = load_scene(args.scene, load);
+  check_not_inputs(scene, {&args.rays_out, &args.hits_out, &args.json});
   for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
 
   BenchReport report;

@@ -3,6 +3,8 @@
 #include <fmt/core.h>
 
 #include "raylab/core/error.h"
+#include "raylab/core/thread_count.h"
+#include "raylab/dist/launcher.h"
 #include "raylab/io/atomic_file.h"
 
 namespace raylab::cli {
@@ -12,7 +14,17 @@ void add_scene_argument(CLI::App& cmd, std::string& scene) {
 }
 
 void add_threads_option(CLI::App& cmd, int& threads, const std::string& description) {
-  cmd.add_option("--threads", threads, description)->check(CLI::Range(0, 1024))->capture_default_str();
+  // The library caps the threads at the cores (usable_threads); the user hears of it once, here
+  // (under MPI from rank 0 only, as every rank would say the same).
+  cmd.add_option("--threads", threads, description)
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str()
+      ->each([](const std::string& value) {
+        if (dist::launched_by_mpi() && dist::launcher_rank() != 0) return;
+        if (const std::string note = thread_count_notice(std::stoi(value)); !note.empty()) {
+          fmt::print(stderr, "note: {}\n", note);
+        }
+      });
 }
 
 void check_table_outputs(const std::string& csv, const std::string& json, const std::string& plot) {
@@ -21,6 +33,12 @@ void check_table_outputs(const std::string& csv, const std::string& json, const 
   }
   for (const std::string* path : {&csv, &json, &plot}) {
     if (!path->empty()) check_writable(*path);  // fail before the work, not after it
+  }
+}
+
+void check_not_inputs(const Scene& scene, std::initializer_list<const std::string*> outputs) {
+  for (const std::string* path : outputs) {
+    if (!path->empty() && *path != "-") check_not_an_input(*path, scene.source_files);
   }
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "commands.h"
+#include "raylab/scene/scene.h"
 
 namespace raylab::cli {
 
@@ -24,12 +25,17 @@ CommandRunner add_command(CLI::App& app, const std::string& name, const std::str
 /// Adds the required SCENE argument of the commands that measure a scene (compare, quality, bench).
 void add_scene_argument(CLI::App& cmd, std::string& scene);
 
-/// Adds --threads (0 to 1024, 0 = all cores), described by `description`.
+/// Adds --threads (0 to 1024, 0 = all cores), described by `description`. A count above this
+/// machine's cores gets one note on stderr (the library uses the cores there are).
 void add_threads_option(CLI::App& cmd, int& threads, const std::string& description = "Worker threads; 0 = all cores");
 
 /// Usage and input errors about the table outputs of compare and quality, before the work: a
 /// --plot that is not .svg, a --csv, --json or --plot that cannot be written (empty: not asked).
 void check_table_outputs(const std::string& csv, const std::string& json, const std::string& plot);
+
+/// Usage error when one of `outputs` (empty: not asked, "-": stdout) is one of the files `scene`
+/// was read from (Scene::source_files): checked once the scene is loaded, before the work.
+void check_not_inputs(const Scene& scene, std::initializer_list<const std::string*> outputs);
 
 /// Adds the table outputs of compare and quality (checked by check_table_outputs): --csv and
 /// --json, the table as such a file, and --plot, an SVG chart described by `plot_description`.

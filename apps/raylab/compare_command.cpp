@@ -58,6 +58,7 @@ int run(const CompareArgs& args) {
   LoadOptions load;
   load.allow_outside_paths = args.allow_outside_paths;
   Scene scene = load_scene(args.scene, load);
+  check_not_inputs(scene, {&args.csv, &args.json, &args.plot});
   for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
   apply_camera_override(scene, args.camera);
   // 512 wide when neither side is given; one side given, the other follows the scene's shape.

@@ -56,6 +56,7 @@ int run(const ConvertArgs& args) {
   LoadOptions load;
   load.allow_outside_paths = args.allow_outside_paths;
   Scene scene = load_scene(args.input, load);
+  check_not_an_input(args.output, scene.source_files);
   for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
   bake_instances(scene);  // the formats written have no instancing: each placement becomes a copy
   const std::vector<std::string> losses = format_losses(scene, ext, is_bare_mesh(args.input));

@@ -111,6 +111,7 @@ int run(const QualityArgs& args) {
   std::optional<Film> given;
   if (options.reference != "auto") given = load_reference_file(options.reference);
   const Scene scene = study_scene(args);
+  check_not_inputs(scene, {&args.csv, &args.json, &args.plot});
   options.reference_key = scene_source_key(args.scene);
   // The camera flags change the reference image as much as the scene's own file would.
   if (!args.camera.empty()) options.reference_key += " camera " + describe_camera_override(args.camera);

@@ -91,7 +91,9 @@ int run_spd_protocol(RenderSetup& setup, const RenderOptions& options) {
   }
   if (args.stats) print_stats(result.stats, setup.accel->info(), result.seconds);
   if (!args.quiet) {
-    fmt::print(table, "wrote {} in {}\n", args.output, ProgressBar::format_duration(result.seconds));
+    print_summary(fmt::format("wrote {} ({}x{}, SPD protocol, {} rays, --accel {})", args.output, kSpdProtocolSize,
+                              kSpdProtocolSize, result.stats.total_rays(), args.accel),
+                  result.seconds);
   }
   return 0;
 }
@@ -120,7 +122,7 @@ void check_mode_options(const RenderArgs& given) {
 // One image in this process.
 int render_here(const RenderArgs& given) {
   // Until the render starts there is nothing to save: a signal ends the run at once.
-  install_interrupt_handlers(remove_pending_temporary_files, true);
+  install_interrupt_handlers(end_at_once, true);
   const std::unique_ptr<RenderSetup> prepared = prepare_render(given, true);
   RenderSetup& setup = *prepared;
   Scene& scene = setup.scene;  // (the SPD protocol sets its own camera settings)
@@ -133,11 +135,11 @@ int render_here(const RenderArgs& given) {
   if (uniform) {
     options.progress = &setup.progress;
     options.should_stop = [] { return interrupt_signal() != 0; };
-    write_each_pass(setup.args, options);
+    write_each_pass(setup, options);
   }
   // From here the first signal lets the tiles under way finish, then the partial image and a
   // checkpoint are written; the adaptive samplers cannot stop part-way, so a signal ends them.
-  install_interrupt_handlers(remove_pending_temporary_files, !uniform);
+  install_interrupt_handlers(end_at_once, !uniform);
   const RenderResult result = render(scene, *setup.accel, film, options);
   if (result.interrupted) return report_interrupted(setup, film, result, bar, interrupt_signal(), true);
   return report_finished(setup, film, result, bar, nullptr, 1);

@@ -21,11 +21,14 @@
 namespace raylab::cli {
 namespace {
 
-// prepare_render, with the first frame's file checked on rank 0 and a scene without a camera
-// path refused.
-std::unique_ptr<RenderSetup> prepare_frames(const RenderArgs& given, bool root, int first) {
+// prepare_render, with the first frame's file checked on rank 0 (and every frame's against the
+// scene's own files) and a scene without a camera path refused.
+std::unique_ptr<RenderSetup> prepare_frames(const RenderArgs& given, bool root, int first, int last) {
   if (root) check_writable(dist::frame_output(given.output, first));
   std::unique_ptr<RenderSetup> prepared = prepare_render(given, false);
+  for (int frame = first; root && frame <= last; ++frame) {
+    check_not_an_input(dist::frame_output(given.output, frame), prepared->scene.source_files);
+  }
   if (prepared->scene.camera_path.empty()) {
     throw UsageError("--frames needs a camera path, and the scene '" + given.scene +
                      "' has none (a scene file's \"camera\": {\"path\": ...}; see docs/scene-format.md)");
@@ -67,18 +70,16 @@ int report_frames(const RenderSetup& setup, const dist::Animation& run, FrameWri
     if (outcome == dist::DistributedOutcome::kFailed) return 1;
     return interrupt_exit_status(interrupt_signal() != 0 ? interrupt_signal() : SIGTERM);
   }
-  if (writer.bar) {
-    writer.bar->finish(
-        fmt::format("{} frames, {}x{}, {} rays", writer.total, s.width, s.height, writer.totals.total_rays()));
-  }
+  if (writer.bar) writer.bar->clear();
   if (args.stats) {
     print_stats(writer.totals, setup.accel->info(), run.seconds);
     print_rank_table(run.result.ranks, "frames");
   }
   if (!args.quiet) {
-    fmt::print("wrote frames {}-{} as {} ({}x{}, --accel {}, {} rank{}) in {}\n", first, last,
-               dist::frame_output(args.output, first), s.width, s.height, args.accel, ranks, ranks > 1 ? "s" : "",
-               ProgressBar::format_duration(run.seconds));
+    print_summary(fmt::format("wrote frames {}-{} as {} ({} frames, {}x{}, {} rays, --accel {}, {} rank{})", first,
+                              last, dist::frame_output(args.output, first), writer.total, s.width, s.height,
+                              writer.totals.total_rays(), args.accel, ranks, ranks > 1 ? "s" : ""),
+                  run.seconds);
   }
   return 0;
 }
@@ -115,11 +116,11 @@ int run_frames(const RenderArgs& given) {
   }
   const auto [first_frame, last_frame] = *dist::parse_frame_range(*given.frames);
   const int first = first_frame, last = last_frame;
-  install_interrupt_handlers(remove_pending_temporary_files, true);
+  install_interrupt_handlers(end_at_once, true);
   dist::ProcessChannel process;
   dist::Channel& channel = process.channel();
   return prepare_then_render(
-      channel, [&](bool root) { return prepare_frames(given, root, first); },
+      channel, [&](bool root) { return prepare_frames(given, root, first, last); },
       [&](RenderSetup& setup, bool root) { return render_frames(setup, root, channel, process.host(), first, last); });
 }
 

@@ -39,7 +39,7 @@ dist::DistributedOptions distributed_options(RenderSetup& setup, bool root, cons
   if (!root) return options;
   show_progress(setup.args, options.render, bar);
   options.render.progress = &setup.progress;
-  write_each_pass(setup.args, options.render);
+  write_each_pass(setup, options.render);
   // A run that ends early always leaves a checkpoint, as an interrupted local render does.
   if (!options.render.on_checkpoint) {
     options.render.on_checkpoint = [&setup](const RenderProgress& state) {
@@ -79,7 +79,7 @@ int run_under_mpi(const RenderArgs& given) {
   dist::require_mpi_build();
   if (given.spd_protocol) throw UsageError("--spd-protocol renders in one process: run it without mpirun");
   // Until the render starts there is nothing to save: a signal ends the run at once.
-  install_interrupt_handlers(remove_pending_temporary_files, true);
+  install_interrupt_handlers(end_at_once, true);
   dist::MpiSession session;
   dist::Channel& channel = session.channel();
   return prepare_then_render(

@@ -8,22 +8,35 @@
 #include "raylab/core/byte_size.h"
 #include "raylab/core/index_ranges.h"
 #include "raylab/core/interrupt.h"
+#include "raylab/io/partial_image.h"
 #include "raylab/render/adaptive.h"
 
 namespace raylab::cli {
 namespace {
 
-// Tells the user what an interrupted render wrote and how to go on.
-void print_interrupted(int signal, const std::string& output, const std::string& checkpoint_path,
-                       const RenderProgress& p) {
+// The unfinished tiles as ranges, cut after about a line: the tiles start in a scattered order,
+// so an interrupted render's unfinished ones are many short ranges (all of them are in the checkpoint).
+std::string unfinished_list(const std::vector<int>& unfinished) {
+  constexpr std::size_t kMost = 160;
+  std::string list = index_ranges(unfinished);
+  if (list.size() <= kMost) return list;
+  list.resize(list.rfind(", ", kMost));
+  return list + ", ...";
+}
+
+// Tells the user what an interrupted render wrote and how to go on. `partial`: where the
+// partial image went; beside `output` when that held an image of the user's, which is kept.
+void print_interrupted(int signal, const std::string& output, const std::string& partial,
+                       const std::string& checkpoint_path, const RenderProgress& p) {
   const std::vector<int> unfinished = p.unfinished_tiles();
+  fmt::print(stderr, "raylab: interrupted by {}: wrote the partial image {} and the checkpoint {}\n",
+             signal == SIGTERM ? "SIGTERM" : "SIGINT", partial, checkpoint_path);
+  if (partial != output) fmt::print(stderr, "  {} was there before this render and is left as it was\n", output);
   fmt::print(stderr,
-             "raylab: interrupted by {}: wrote the partial image {} and the checkpoint {}\n"
              "  pass {} of {}: {} of {} tiles unfinished{}: {}\n"
              "  resume with the same command and --resume {}\n",
-             signal == SIGTERM ? "SIGTERM" : "SIGINT", output, checkpoint_path, p.passes_done + 1, p.passes,
-             unfinished.size(), p.tile_count(), p.passes_done == 0 ? " (black in the image)" : "",
-             index_ranges(unfinished), checkpoint_path);
+             p.passes_done + 1, p.passes, unfinished.size(), p.tile_count(),
+             p.passes_done == 0 ? " (black in the image)" : "", unfinished_list(unfinished), checkpoint_path);
 }
 
 // Prints a finished render's notices and its non-finite sample warning.
@@ -41,6 +54,16 @@ void remove_finished_checkpoint(const RenderSetup& setup) {
   std::error_code removed;
   if (saves_checkpoints(setup.args) && std::filesystem::remove(setup.checkpoint_path, removed) && !setup.args.quiet) {
     fmt::print(stderr, "note: removed the checkpoint {} (the render is complete)\n", setup.checkpoint_path);
+  }
+}
+
+// Removes what an interrupted run of this render left beside the output, now that the render
+// is complete: its partial image (a file of this name is no one else's).
+void remove_stale_partial_image(const RenderSetup& setup) {
+  const std::string partial = partial_image_beside(setup.args.output);
+  std::error_code removed;
+  if (std::filesystem::remove(partial, removed) && !setup.args.quiet) {
+    fmt::print(stderr, "note: removed the partial image {} (the render is complete)\n", partial);
   }
 }
 
@@ -83,6 +106,10 @@ void print_stats(const RenderStats& s, const AccelInfo& info, double seconds) {
   fmt::print("throughput                {:.2f} Mrays/s\n", seconds > 0 ? total / seconds * 1e-6 : 0.0);
 }
 
+void print_summary(const std::string& what, double seconds) {
+  fmt::print(stderr, "{} in {}\n", what, ProgressBar::format_duration(seconds));
+}
+
 void print_stopping(const std::string& message) {
   fmt::print(stderr, "\nraylab: {}\n", message);
   std::fflush(stderr);
@@ -107,20 +134,21 @@ int report_finished(const RenderSetup& setup, const Film& film, const RenderResu
   const std::string sampling = sampling_summary(setup, result);
   const double mrays = result.seconds > 0 ? result.stats.total_rays() / result.seconds * 1e-6 : 0.0;
   const std::string on_ranks = ranks ? fmt::format(", {} ranks", rank_count) : "";
-  if (bar) {
-    bar->finish(fmt::format("{}x{}, {}, {} rays ({:.2f} Mrays/s){}", s.width, s.height, sampling,
-                            result.stats.total_rays(), mrays, on_ranks));
-  }
+  if (bar) bar->clear();
   print_warnings(result);
   write_outputs(args, args.output, film, result.samples_per_pixel);
   remove_finished_checkpoint(setup);
+  remove_stale_partial_image(setup);
   if (args.stats) {
     print_stats(result.stats, setup.accel->info(), result.seconds);
     if (ranks) print_rank_table(*ranks, "tiles");
   }
+  // The one line of a successful render, on stderr with the other reports: stdout stays for
+  // what scripts read (--stats, --json -).
   if (!args.quiet) {
-    fmt::print("wrote {} ({}x{}, {}, {} primary rays, --accel {}{}) in {}\n", args.output, s.width, s.height, sampling,
-               result.primary_rays(), args.accel, on_ranks, ProgressBar::format_duration(result.seconds));
+    print_summary(fmt::format("wrote {} ({}x{}, {}, {} rays at {:.2f} Mrays/s, --accel {}{})", args.output, s.width,
+                              s.height, sampling, result.stats.total_rays(), mrays, args.accel, on_ranks),
+                  result.seconds);
   }
   return 0;
 }
@@ -129,14 +157,15 @@ int report_interrupted(RenderSetup& setup, const Film& film, const RenderResult&
                        std::optional<ProgressBar>& bar, int signal, bool save_checkpoint) {
   const RenderArgs& args = setup.args;
   if (bar) bar->finish("interrupted");
-  write_outputs(args, args.output, film, result.samples_per_pixel);
+  const std::string partial = partial_image_path(args.output, setup.output_existed, setup.output_written);
+  write_outputs(args, partial, film, result.samples_per_pixel);
   if (save_checkpoint) {
     RenderCheckpoint checkpoint = setup.header;
     checkpoint.progress = std::move(setup.progress);
     write_checkpoint(setup.checkpoint_path, checkpoint);
     setup.progress = std::move(checkpoint.progress);
   }
-  print_interrupted(signal, args.output, setup.checkpoint_path, setup.progress);
+  print_interrupted(signal, args.output, partial, setup.checkpoint_path, setup.progress);
   return interrupt_exit_status(signal);
 }
 

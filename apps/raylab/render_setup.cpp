@@ -45,16 +45,30 @@ bool wants_samples_aov(const RenderArgs& args) {
   return std::find(args.aovs.begin(), args.aovs.end(), "samples") != args.aovs.end();
 }
 
-// Usage errors (an image format) and input errors (a folder that cannot be written) about the
-// outputs, before any work.
+// The image and the sample-count files --aov samples adds.
+std::vector<std::string> image_outputs(const RenderArgs& args) {
+  std::vector<std::string> files{args.output};
+  if (wants_samples_aov(args)) {
+    files.push_back(beside_output(args.output, ".samples.png"));
+    if (lowercase_extension(args.output) != ".exr") files.push_back(beside_output(args.output, ".samples.exr"));
+  }
+  return files;
+}
+
+// Usage errors about the outputs (an image format, a folder that cannot be written), before any work.
 void check_outputs(const RenderArgs& args, bool writes_outputs) {
   check_image_extension(args.output);
   if (!writes_outputs) return;
-  check_writable(args.output);
-  if (wants_samples_aov(args)) {
-    check_writable(beside_output(args.output, ".samples.png"));
-    if (lowercase_extension(args.output) != ".exr") check_writable(beside_output(args.output, ".samples.exr"));
-  }
+  for (const std::string& file : image_outputs(args)) check_writable(file);
+}
+
+// Usage error when an output of the render would overwrite one of the files the scene was read
+// from (the scene file, a mesh, a texture...), once the scene is loaded and before any work.
+void check_outputs_not_inputs(const RenderSetup& setup) {
+  const std::vector<std::string>& inputs = setup.scene.source_files;
+  for (const std::string& file : image_outputs(setup.args)) check_not_an_input(file, inputs);
+  check_not_an_input(setup.checkpoint_path, inputs);
+  if (setup.args.json && *setup.args.json != "-") check_not_an_input(*setup.args.json, inputs);
 }
 
 // Usage errors about the sampling settings `s` (with the resolved `sampler`) and the options that
@@ -88,11 +102,20 @@ void show_progress(const RenderArgs& args, RenderOptions& options, std::optional
   if (bar) options.on_progress = [&bar](int done, int total) { bar->update(done, total); };
 }
 
-void write_each_pass(const RenderArgs& args, RenderOptions& options) {
-  options.on_pass = [&args, passes = options.passes, interactive = stderr_interactive()](int done, const Film& image) {
+void write_each_pass(RenderSetup& setup, RenderOptions& options) {
+  options.on_pass = [&setup, passes = options.passes, interactive = stderr_interactive()](int done, const Film& image) {
+    const RenderArgs& args = setup.args;
+    // A whole image of this render (every pixel has the first pass's samples): from here on the
+    // output holds this render's image, and an interrupted render may update it in place.
     write_image(image, args.output);
+    setup.output_written = true;
     if (!args.quiet) fmt::print(stderr, "{}pass {}/{}: wrote {}\n", interactive ? "\n" : "", done, passes, args.output);
   };
+}
+
+void end_at_once() noexcept {
+  ProgressBar::end_line_now();
+  remove_pending_temporary_files();
 }
 
 bool saves_checkpoints(const RenderArgs& args) { return args.checkpoint || args.resume; }
@@ -108,6 +131,8 @@ std::unique_ptr<RenderSetup> prepare_render(const RenderArgs& given, bool writes
     resume_from(args, *saved);
   }
   check_outputs(args, writes_outputs);
+  std::error_code ec;
+  setup.output_existed = writes_outputs && std::filesystem::exists(args.output, ec);
   LoadOptions load;
   load.allow_outside_paths = args.allow_outside_paths;
   setup.scene = load_scene(args.scene, load);
@@ -136,7 +161,10 @@ std::unique_ptr<RenderSetup> prepare_render(const RenderArgs& given, bool writes
   setup.checkpoint_path = args.checkpoint ? *args.checkpoint
                           : args.resume   ? *args.resume
                                           : beside_output(args.output, ".ckpt");
-  if (writes_outputs) check_writable(setup.checkpoint_path);
+  if (writes_outputs) {
+    check_writable(setup.checkpoint_path);
+    check_outputs_not_inputs(setup);
+  }
   // Before the accelerator or the image is allocated: refuse what cannot fit (the estimate counts
   // the copies that checkpoints take).
   check_memory_limit(estimate_render_memory(scene, render_options(setup)), scene.primitive_count(),

@@ -65,6 +65,11 @@ struct RenderSetup {
   RenderProgress progress;      ///< from --resume, else empty
   std::string checkpoint_path;  ///< where checkpoints go
   std::unique_ptr<Accelerator> accel;
+  /// Whether the output was there before the render started (an interrupted render then writes
+  /// its partial image beside it), and whether this render has written a whole image of its own
+  /// there since (a pass): see partial_image_path.
+  bool output_existed = false;
+  bool output_written = false;
 };
 
 /// Loads and checks everything before the pixels: usage errors (UsageError) and input errors
@@ -92,7 +97,12 @@ bool stderr_interactive();
 /// A progress bar for the render on stderr in `bar` (none with --quiet), fed by options.on_progress.
 void show_progress(const RenderArgs& args, RenderOptions& options, std::optional<ProgressBar>& bar);
 
-/// Writes the image after each pass of options.passes (set before), with a line saying so.
-void write_each_pass(const RenderArgs& args, RenderOptions& options);
+/// Writes the image after each pass of options.passes (set before), with a line saying so, and
+/// notes in setup.output_written that the output now holds this render's image.
+void write_each_pass(RenderSetup& setup, RenderOptions& options);
+
+/// The last words of a run that a signal ends at once: ends a progress bar's line and removes
+/// the temporaries of the writes under way. Async-signal-safe (for install_interrupt_handlers).
+void end_at_once() noexcept;
 
 }  // namespace raylab::cli

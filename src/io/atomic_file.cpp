@@ -58,22 +58,62 @@ std::string parent_folder(const std::string& path) {
   return parent.empty() ? std::string(".") : parent.string();
 }
 
+// Why `path` cannot be written, or empty. `probe`: also create (and remove) a file in its folder.
+std::string unwritable_reason(const std::string& path, bool probe) {
+  namespace fs = std::filesystem;
+  const std::string folder = parent_folder(path);
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) {
+    // The nearest part of the path that exists says what is wrong: a file where a folder
+    // should be, else a folder that is missing.
+    for (fs::path p = fs::path(folder); !p.empty() && p != p.parent_path(); p = p.parent_path()) {
+      if (fs::is_directory(p, ec)) break;
+      if (fs::exists(p, ec)) return "'" + p.string() + "' is a file, not a folder";
+    }
+    return "folder '" + folder + "' does not exist";
+  }
+  if (fs::is_directory(path, ec)) return "it is a folder";
+  if (::access(folder.c_str(), W_OK) != 0)
+    return "folder '" + folder + "' is not writable (" + std::strerror(errno) + ")";
+  if (!probe) return "";
+  // access() says yes to root everywhere, /proc included: only creating a file tells. The probe
+  // is registered like a write's temporary, so that a signal cannot leave it behind.
+  std::string temp = (fs::path(folder) / ".raylab-probe-XXXXXX").string();
+  std::vector<char> name(temp.begin(), temp.end());
+  name.push_back('\0');
+  const int fd = ::mkstemp(name.data());
+  if (fd < 0) return "folder '" + folder + "' is not writable (" + std::strerror(errno) + ")";
+  const PendingTemporary pending(name.data());
+  ::close(fd);
+  ::unlink(name.data());
+  return "";
+}
+
 }  // namespace
 
 void check_writable(const std::string& path) {
-  const std::string folder = parent_folder(path);
+  if (const std::string reason = unwritable_reason(path, true); !reason.empty()) {
+    throw UsageError("cannot write '" + path + "': " + reason);
+  }
+}
+
+void check_not_an_input(const std::string& path, const std::vector<std::string>& inputs) {
   std::error_code ec;
-  if (!std::filesystem::is_directory(folder, ec)) {
-    throw InputError(path, "cannot write: folder '" + folder + "' does not exist");
+  for (const std::string& input : inputs) {
+    // The same file by any name (a relative path, a link): an output that exists and is one.
+    if (std::filesystem::equivalent(path, input, ec)) {
+      throw UsageError("cannot write '" + path + "': it is one of the scene's own input files ('" + input +
+                       "'); choose another output");
+    }
   }
-  if (::access(folder.c_str(), W_OK) != 0) {
-    throw InputError(path, "cannot write: folder '" + folder + "' is not writable (" + std::strerror(errno) + ")");
-  }
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "cannot write: it is a folder");
 }
 
 void write_file_atomically(const std::string& path, std::span<const unsigned char> bytes) {
-  check_writable(path);
+  // Found at write time, after the work: an input error (the file system changed, or no check
+  // was made before); the probe is left out, as the temporary below is one.
+  if (const std::string reason = unwritable_reason(path, false); !reason.empty()) {
+    throw InputError(path, "cannot write: " + reason);
+  }
   // mkstemp in the target's folder: the rename below then stays on one file system (atomic).
   // The name is cut so that the temporary's name (11 characters longer) stays within NAME_MAX
   // (255) whenever the target's does.

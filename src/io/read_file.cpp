@@ -1,5 +1,6 @@
 #include "raylab/io/read_file.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -8,6 +9,22 @@
 #include "raylab/core/error.h"
 
 namespace raylab {
+namespace {
+
+// The innermost log of this thread (loaders run on the calling thread).
+thread_local FileReadLog* t_log = nullptr;
+
+}  // namespace
+
+FileReadLog::FileReadLog() : m_outer(t_log) { t_log = this; }
+
+FileReadLog::~FileReadLog() { t_log = m_outer; }
+
+void note_file_read(const std::string& path) {
+  for (FileReadLog* log = t_log; log != nullptr; log = log->m_outer) {
+    if (std::find(log->m_files.begin(), log->m_files.end(), path) == log->m_files.end()) log->m_files.push_back(path);
+  }
+}
 
 std::string read_file(const std::string& path) {
   std::error_code ec;
@@ -20,6 +37,7 @@ std::string read_file(const std::string& path) {
   in.seekg(0, std::ios::beg);
   std::string bytes(static_cast<std::size_t>(size), '\0');
   if (size > 0 && !in.read(bytes.data(), size)) throw InputError(path, "cannot read the file");
+  note_file_read(path);
   return bytes;
 }
 

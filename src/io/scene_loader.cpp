@@ -12,6 +12,7 @@
 #include "raylab/io/obj_loader.h"
 #include "raylab/io/off_loader.h"
 #include "raylab/io/ply_loader.h"
+#include "raylab/io/read_file.h"
 #include "raylab/io/scene_json.h"
 #include "raylab/io/stl_loader.h"
 #include "raylab/scene/builtin_scenes.h"
@@ -139,7 +140,10 @@ Scene load_mesh(const std::string& path, const LoadOptions& options) {
   return scene;
 }
 
-Scene load_scene(const std::string& source, const LoadOptions& options) {
+namespace {
+
+// load_scene without the list of files read.
+Scene load_scene_source(const std::string& source, const LoadOptions& options) {
   if (is_builtin_scene(source)) return make_builtin_scene(source);
   if (is_spd_source(source)) return make_spd_scene(source);
   const std::string ext = lowercase_extension(source);
@@ -171,6 +175,15 @@ Scene load_scene(const std::string& source, const LoadOptions& options) {
   }
   throw UsageError("cannot load '" + source + "': unsupported scene format '" + ext +
                    "' (supported: " + extension_list() + ")");
+}
+
+}  // namespace
+
+Scene load_scene(const std::string& source, const LoadOptions& options) {
+  const FileReadLog log;
+  Scene scene = load_scene_source(source, options);
+  scene.source_files = log.files();
+  return scene;
 }
 
 }  // namespace raylab

@@ -2,6 +2,7 @@
 // agreement check. The table, CSV and JSON are in accel_compare_format.cpp.
 
 #include "raylab/lab/accel_compare.h"
+#include "raylab/core/thread_count.h"
 
 #include <tbb/combinable.h>
 #include <tbb/info.h>
@@ -271,7 +272,7 @@ CompareResult compare_accelerators(const Scene& scene, const CompareOptions& opt
 }
 
 CompareResult compare_accelerators(const Scene& scene, const CompareOptions& options, const AccelBuilder& build) {
-  const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  const int threads = usable_threads(options.threads);
   tbb::task_arena arena(threads);
   CompareResult result;
   arena.execute([&] { result = run_comparison(scene, options, build); });

@@ -2,6 +2,7 @@
 // table and JSON are in bench_format.cpp.
 
 #include "raylab/lab/bench.h"
+#include "raylab/core/thread_count.h"
 
 #include <fmt/format.h>
 #include <tbb/global_control.h>
@@ -347,7 +348,7 @@ BenchReport run_bench(const Scene& scene, const BenchOptions& o) {
 
 BenchReport run_bench(const Scene& scene, const BenchOptions& o, const BenchAccelBuilder& build) {
   check_options(o);
-  const int threads = o.threads > 0 ? o.threads : tbb::info::default_concurrency();
+  const int threads = usable_threads(o.threads);
   // One cap for everything parallel: our builder, Embree's TBB tasks, the ray-set generation.
   tbb::global_control cap(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   auto progress = [&](const std::string& line) {

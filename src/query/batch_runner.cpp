@@ -6,6 +6,8 @@
 
 #include <algorithm>
 
+#include "raylab/core/thread_count.h"
+
 namespace raylab {
 
 namespace {
@@ -18,7 +20,7 @@ constexpr std::size_t kWave = std::size_t{1} << 16;
 
 void run_query_batch(std::size_t count, const QueryOptions& options,
                      const std::function<void(std::size_t, std::size_t)>& work) {
-  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  tbb::task_arena arena(usable_threads(options.threads));
   for (std::size_t wave = 0; wave < count; wave += kWave) {
     if (options.should_stop && options.should_stop()) throw QueryInterrupted();
     const std::size_t wave_end = std::min(count, wave + kWave);

@@ -6,6 +6,7 @@
 
 #include "mesh_arrays.h"
 #include "ray_query_state.h"
+#include "raylab/core/thread_count.h"
 #include "raylab/scene/scene_merge.h"
 
 namespace raylab {
@@ -44,7 +45,7 @@ RayQuery RayQuery::from_scene(Scene scene) {
 }
 
 void RayQuery::build(std::string_view accel, const AccelConfig& config, int threads) {
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  tbb::task_arena arena(usable_threads(threads));
   std::unique_ptr<Accelerator> built;
   arena.execute([&] { built = make_accelerator(accel, m_state->scene.geometry, config); });
   const std::lock_guard lock(m_state->build_mutex);

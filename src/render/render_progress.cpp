@@ -5,6 +5,7 @@
 #include <string>
 
 #include "raylab/core/error.h"
+#include "raylab/core/hash64.h"
 #include "render_workers.h"
 
 namespace raylab {
@@ -23,6 +24,16 @@ TileSums tile_area(int t, int width, int height, int tile_size, int margin) {
 }
 
 }  // namespace
+
+std::vector<int> scattered_tile_order(std::vector<int> tiles) {
+  auto key = [](int t) {
+    Hash64 h;
+    h.word(static_cast<std::uint64_t>(t));
+    return h.value();
+  };
+  std::sort(tiles.begin(), tiles.end(), [&](int a, int b) { return key(a) < key(b); });
+  return tiles;
+}
 
 std::vector<int> RenderProgress::unfinished_tiles() const {
   std::vector<int> out;

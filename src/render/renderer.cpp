@@ -10,6 +10,7 @@
 
 #include "packet_tracing.h"
 #include "raylab/core/error.h"
+#include "raylab/core/thread_count.h"
 #include "raylab/render/adaptive.h"
 #include "raylab/render/camera.h"
 #include "raylab/sampling/filter.h"
@@ -69,7 +70,8 @@ RenderResult render_uniform(const Scene& scene, const Accelerator& accel, Film& 
   const auto start = std::chrono::steady_clock::now();
   for (int pass = progress.passes_done; pass < progress.passes; ++pass) {
     const int first = progress.samples_before(pass), end = progress.samples_before(pass + 1);
-    const std::vector<int> todo = progress.unfinished_tiles();
+    const std::vector<int> todo =
+        options.scattered_tiles ? scattered_tile_order(progress.unfinished_tiles()) : progress.unfinished_tiles();
     workers.for_each(static_cast<int>(todo.size()), [&](int k, const TraceContext& ctx) {
       if (stopped.load(std::memory_order_relaxed) || (options.should_stop && options.should_stop())) {
         stopped.store(true, std::memory_order_relaxed);
@@ -117,9 +119,7 @@ void check_adaptive_options(const std::string& sampler, const RenderOptions& opt
 
 }  // namespace
 
-int render_thread_count(const RenderOptions& options) {
-  return options.threads > 0 ? options.threads : tbb::info::default_concurrency();
-}
+int render_thread_count(const RenderOptions& options) { return usable_threads(options.threads); }
 
 std::string resolve_sampler_name(const RenderSettings& settings) {
   if (settings.sampler == "auto") return settings.spp <= 1 ? "center" : "jittered";

@@ -1,5 +1,6 @@
 #include "raylab/render/spd_protocol.h"
 #include "raylab/core/stopwatch.h"
+#include "raylab/core/thread_count.h"
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/info.h>
@@ -60,7 +61,7 @@ SpdProtocolResult render_spd_protocol(Scene& scene, const Accelerator& accel, Fi
   std::vector<Color> corner(static_cast<std::size_t>(corners) * corners);
   tbb::enumerable_thread_specific<RenderStats> thread_stats;
   std::atomic<int> rows_done{0};
-  const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  const int threads = usable_threads(options.threads);
   tbb::task_arena arena(threads);
   const auto start = std::chrono::steady_clock::now();
   arena.execute([&] {

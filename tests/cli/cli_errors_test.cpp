@@ -87,9 +87,9 @@ TEST_F(Cli, MissingObjFileIsAnInputError) {
   expect_out_empty();
 }
 
-TEST_F(Cli, OutputFolderThatDoesNotExistIsAnInputError) {
+TEST_F(Cli, OutputFolderThatDoesNotExistIsAUsageError) {
   const CliResult r = run(demo_with("", "/nonexistent/dir/x.png"));
-  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("/nonexistent/dir"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists("/nonexistent"));
 }
@@ -180,7 +180,7 @@ TEST_F(Cli, DiffExitCodes) {
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(image_rmse(read_image(out_file("d.png")), white), 0.0);
   r = run("diff '" + a + "' '" + b + "' --image '" + out_file("none/d.png") + "'");
-  EXPECT_EQ(r.code, 5) << r.err;
+  EXPECT_EQ(r.code, 2) << r.err;  // refused before the images are read
   EXPECT_EQ(r.out.find("rmse"), std::string::npos) << r.out;
 }
 
@@ -189,7 +189,7 @@ std::vector<unsigned char> bytes_of(const std::string& s) { return {s.begin(), s
 TEST_F(Cli, AtomicWriteIntoMissingFolderThrowsAndCreatesNothing) {
   const fs::path target = out() / "missing" / "x.bin";
   EXPECT_THROW(write_file_atomically(target.string(), bytes_of("data")), InputError);
-  EXPECT_THROW(check_writable(target.string()), InputError);
+  EXPECT_THROW(check_writable(target.string()), UsageError);  // the check before the work
   EXPECT_FALSE(fs::exists(out() / "missing"));
   expect_out_empty();
 }

@@ -85,7 +85,7 @@ TEST_F(Cli, CompareWritesHeatmapsPlotCsvAndJson) {
 TEST_F(Cli, CompareFailsBeforeWorkOnAnUnwritableOutputAndLeavesNothing) {
   const CliResult r =
       run("compare " + kWhitted + " --accels bvh --width 8 --height 8 --plot '" + out_file("missing/chart.svg") + "'");
-  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
   EXPECT_EQ(r.out, "");  // refused before measuring anything
   expect_out_empty();

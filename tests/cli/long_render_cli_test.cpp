@@ -15,41 +15,11 @@
 #include <thread>
 
 #include "../test_paths.h"
+#include "background_process.h"
 #include "cli_fixture.h"
 
 namespace raylab::cli_test {
 namespace {
-
-// A raylab process started in the background, its streams going to files in `work`.
-class Background {
- public:
-  Background(const std::vector<std::string>& args, const fs::path& err) {
-    m_pid = ::fork();
-    if (m_pid == 0) {
-      const int fd = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      ::dup2(fd, STDERR_FILENO);
-      ::dup2(fd, STDOUT_FILENO);
-      std::vector<char*> argv;
-      std::string binary = raylab::test::raylab_binary();
-      argv.push_back(binary.data());
-      std::vector<std::string> copy = args;
-      for (std::string& a : copy) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      ::execv(binary.c_str(), argv.data());
-      ::_exit(127);
-    }
-  }
-  void signal(int sig) const { ::kill(m_pid, sig); }
-  // The exit status, or 128 + the signal that killed it.
-  int wait() const {
-    int status = 0;
-    ::waitpid(m_pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  }
-
- private:
-  pid_t m_pid = -1;
-};
 
 class LongRender : public Cli {
  protected:
@@ -69,20 +39,6 @@ class LongRender : public Cli {
     EXPECT_EQ(bytes.substr(0, header.size()), header);
   }
 };
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::string word;
-  for (char c : s + " ") {
-    if (c == ' ') {
-      if (!word.empty()) out.push_back(word);
-      word.clear();
-    } else {
-      word += c;
-    }
-  }
-  return out;
-}
 
 TEST_F(LongRender, KilledAtRandomMomentsAndResumedGivesTheSameBytes) {
   const std::string settings = "render demo --width 96 --height 54 --spp 36 --threads 2 -q";

@@ -13,14 +13,14 @@ TEST_F(Cli, SppRoundingIsAnnounced) {
   const CliResult r = run("render aa-edges --width 32 --height 24 --sampler jittered --spp 10 -o " + out_file("a.png"));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("--spp 10 rounded to 9 for the jittered sampler"), std::string::npos) << r.err;
-  EXPECT_NE(r.out.find("9 spp jittered"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("9 spp jittered"), std::string::npos) << r.err;
 }
 
 TEST_F(Cli, AdaptiveReportsItsRaysAndWritesTheSampleCounts) {
   const CliResult r =
       run("render aa-edges --width 64 --height 48 --sampler adaptive --aov samples -o " + out_file("a.exr"));
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("primary rays per pixel"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("primary rays per pixel"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::exists(out() / "a.samples.png"));
   EXPECT_FALSE(fs::exists(out() / "a.samples.exr"));  // the layer is inside a.exr
   const auto channels = read_exr_channels(out_file("a.exr"));

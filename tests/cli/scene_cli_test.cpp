@@ -106,7 +106,7 @@ TEST_F(Cli, SpdProtocolOptionsAreCheckedBeforeTheRender) {
   // A JSON file that cannot be written is refused before anything is rendered or written.
   const CliResult r = run("render 'spd:balls?size=1' --spd-protocol -q -o '" + out_file("x.png") + "' --json '" +
                           out_file("missing/x.json") + "'");
-  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_TRUE(entries(out()).empty());
 }
 

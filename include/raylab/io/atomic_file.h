@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace raylab {
 
@@ -21,8 +22,14 @@ void write_text_atomically(const std::string& path, std::string_view text);
 /// stray temporary is left beside them.
 void remove_pending_temporary_files() noexcept;
 
-/// Fails early, with the same InputError a write would give, when `path` cannot be written
-/// (its folder is missing or not writable). Creates nothing.
+/// Fails early, before any work, with UsageError (the command line's exit 2) naming the
+/// problem when `path` cannot be written: its folder is missing, a part of the path is a file, the
+/// path is a folder, or the folder refuses a new file (tried: access() says yes to root even in
+/// /proc). Leaves nothing behind.
 void check_writable(const std::string& path);
+
+/// Fails with UsageError when `path` is one of `inputs` (the files a scene was read from:
+/// Scene::source_files), by any name: writing there would destroy an input of the work.
+void check_not_an_input(const std::string& path, const std::vector<std::string>& inputs);
 
 }  // namespace raylab

@@ -60,6 +60,13 @@ struct RenderProgress {
 /// themselves (0: the pixel box filter, no weights kept). Throws UsageError on sizes out of range.
 RenderProgress start_progress(int width, int height, int tile_size, int spp, int passes, int margin);
 
+/// `tiles` in a scattered order, the same on every run (sorted by a hash of the tile number): a
+/// render that starts its tiles in this order has done a fair sample of the image's work at any
+/// moment, so the share of tiles done is the share of the time taken and the ETA holds (row by
+/// row, a sky's cheap rows come first and the ETA is too short by half; docs/performance.md).
+/// Which tile is rendered when changes nothing in the image.
+std::vector<int> scattered_tile_order(std::vector<int> tiles);
+
 /// Bytes that start_progress would allocate for these sizes, without allocating them.
 std::size_t progress_memory_bytes(int width, int height, int tile_size, int margin);
 

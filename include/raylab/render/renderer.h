@@ -30,6 +30,10 @@ struct RenderOptions {
   /// finished it (so it must be thread-safe); may be empty. With several passes the totals count
   /// every pass's tiles.
   std::function<void(int, int)> on_progress;
+  /// Start the tiles of each pass in a scattered order (scattered_tile_order) rather than row by
+  /// row, so that the share of tiles done, which on_progress reports, tracks the share of the
+  /// work done (the ETA). The image is the same bits either way; false is for measuring that.
+  bool scattered_tiles = true;
 
   // Long renders (the uniform samplers only; the adaptive samplers refuse these with UsageError).
 

@@ -53,6 +53,10 @@ struct Scene {
   /// What loading dropped or approximated (zero-area faces, unsupported features), one line
   /// each, for the command line to show as warnings.
   std::vector<std::string> warnings;
+  /// The files the scene was read from (the scene file, meshes, material libraries, textures,
+  /// glTF buffers and images), as the loaders opened them; empty for built-in and SPD scenes.
+  /// What an output must never overwrite (check_not_an_input).
+  std::vector<std::string> source_files;
 
   /// Adds a material; returns its index.
   std::uint32_t add_material(Material m);

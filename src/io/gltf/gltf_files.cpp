@@ -61,6 +61,7 @@ bool uri_read_file(std::vector<unsigned char>* out, std::string* err, const std:
     return false;
   }
   out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  note_file_read(*resolved);
   return true;
 }
 
