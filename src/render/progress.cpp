@@ -1,6 +1,5 @@
 #include "raylab/render/progress.h"
 
-#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -8,6 +7,7 @@
 #include <cstdlib>
 
 #include "raylab/core/stopwatch.h"
+#include "raylab/core/terminal.h"
 
 namespace raylab {
 namespace {
@@ -26,7 +26,7 @@ ProgressBar::ProgressBar(std::string label, std::FILE* out, bool interactive, in
     : m_label(std::move(label)),
       m_out(out),
       m_interactive(interactive),
-      m_columns(columns > 0 ? columns : terminal_columns(out)),
+      m_columns(columns > 0 ? columns : raylab::terminal_columns(out != nullptr ? ::fileno(out) : -1)),
       m_start(std::chrono::steady_clock::now()) {}
 
 ProgressBar::~ProgressBar() {
@@ -81,16 +81,6 @@ std::string ProgressBar::format_line(const std::string& label, int done, int tot
   line += tail;
   if (static_cast<int>(line.size()) > room) line.resize(static_cast<std::size_t>(std::max(0, room)));
   return line;
-}
-
-int ProgressBar::terminal_columns(std::FILE* out) {
-  winsize size{};
-  if (out != nullptr && ::ioctl(::fileno(out), TIOCGWINSZ, &size) == 0 && size.ws_col > 0) return size.ws_col;
-  if (const char* columns = std::getenv("COLUMNS")) {
-    const int n = std::atoi(columns);
-    if (n > 0) return n;
-  }
-  return 80;
 }
 
 void ProgressBar::end_line_now() noexcept {

@@ -10,6 +10,7 @@
 #include <numeric>
 #include <set>
 
+#include "raylab/core/terminal.h"
 #include "raylab/render/progress.h"
 #include "raylab/render/render_progress.h"
 
@@ -56,9 +57,9 @@ TEST(ProgressBar, TerminalWidthFromColumnsWhenTheStreamIsNoTerminal) {
   const char* saved = std::getenv("COLUMNS");
   const std::string keep = saved ? saved : "";
   ::setenv("COLUMNS", "77", 1);
-  EXPECT_EQ(ProgressBar::terminal_columns(file), 77);
+  EXPECT_EQ(raylab::terminal_columns(::fileno(file)), 77);
   ::unsetenv("COLUMNS");
-  EXPECT_EQ(ProgressBar::terminal_columns(file), 80);
+  EXPECT_EQ(raylab::terminal_columns(::fileno(file)), 80);
   if (saved) ::setenv("COLUMNS", keep.c_str(), 1);
   std::fclose(file);
 }

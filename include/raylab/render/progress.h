@@ -16,7 +16,7 @@ namespace raylab {
 class ProgressBar {
  public:
   /// `label` precedes the bar; `interactive` selects the redrawn bar over the summary line.
-  /// `columns`: the terminal's width; 0 asks terminal_columns(out).
+  /// `columns`: the terminal's width; 0 asks raylab::terminal_columns (core/terminal.h) of `out`.
   ProgressBar(std::string label, std::FILE* out, bool interactive, int columns = 0);
   ~ProgressBar();
   ProgressBar(const ProgressBar&) = delete;
@@ -42,9 +42,6 @@ class ProgressBar {
   /// characters (the last column would make some terminals wrap): the bar shrinks, then the
   /// elapsed time and the label go, as the width requires.
   static std::string format_line(const std::string& label, int done, int total, double elapsed, int columns);
-
-  /// The width of the terminal `out` writes to (TIOCGWINSZ), else $COLUMNS, else 80.
-  static int terminal_columns(std::FILE* out);
 
   /// Ends a bar's line that is drawn now with a newline, so that whatever the terminal shows next
   /// starts on a line of its own. Async-signal-safe (one write), for a signal handler about to
