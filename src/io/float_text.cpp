@@ -28,4 +28,13 @@ std::string float_text(float v) {
   return out;
 }
 
+void append_float_line(std::string& out, const char* keyword, std::initializer_list<float> values) {
+  out += keyword;
+  for (const float v : values) {
+    out += ' ';
+    append_float_text(out, v);
+  }
+  out += '\n';
+}
+
 }  // namespace raylab

@@ -6,18 +6,6 @@
 #include "raylab/io/float_text.h"
 
 namespace raylab {
-namespace {
-
-void append_line(std::string& out, const char* keyword, std::initializer_list<float> values) {
-  out += keyword;
-  for (const float v : values) {
-    out += ' ';
-    append_float_text(out, v);
-  }
-  out += '\n';
-}
-
-}  // namespace
 
 std::vector<std::string> export_material_names(const Scene& scene) {
   std::vector<std::string> names;
@@ -49,14 +37,14 @@ std::string encode_mtl(const Scene& scene) {
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
     out += "\nnewmtl " + names[i] + "\n";
-    append_line(out, "Kd", {m.color.x * m.kd, m.color.y * m.kd, m.color.z * m.kd});
-    append_line(out, "Ks", {m.ks, m.ks, m.ks});
-    append_line(out, "Ns", {m.shininess});
-    append_line(out, "d", {1.f - m.transmittance});
-    append_line(out, "Tr", {m.transmittance});
-    append_line(out, "Ni", {m.ior});
+    append_float_line(out, "Kd", {m.color.x * m.kd, m.color.y * m.kd, m.color.z * m.kd});
+    append_float_line(out, "Ks", {m.ks, m.ks, m.ks});
+    append_float_line(out, "Ns", {m.shininess});
+    append_float_line(out, "d", {1.f - m.transmittance});
+    append_float_line(out, "Tr", {m.transmittance});
+    append_float_line(out, "Ni", {m.ior});
     if (m.emission.x != 0.f || m.emission.y != 0.f || m.emission.z != 0.f) {
-      append_line(out, "Ke", {m.emission.x, m.emission.y, m.emission.z});
+      append_float_line(out, "Ke", {m.emission.x, m.emission.y, m.emission.z});
     }
     out += m.reflectivity > 0.f ? "illum 3\n" : "illum 2\n";
   }

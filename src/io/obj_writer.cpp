@@ -5,18 +5,6 @@
 #include "raylab/io/mtl_writer.h"
 
 namespace raylab {
-namespace {
-
-void append_vec(std::string& out, const char* keyword, std::initializer_list<float> values) {
-  out += keyword;
-  for (const float v : values) {
-    out += ' ';
-    append_float_text(out, v);
-  }
-  out += '\n';
-}
-
-}  // namespace
 
 std::string encode_obj(const Scene& scene, const std::string& mtl_file) {
   const Geometry& g = scene.geometry;
@@ -38,17 +26,17 @@ std::string encode_obj(const Scene& scene, const std::string& mtl_file) {
       }
     }
     const Triangle& t = g.triangles[i];
-    for (const Vec3& p : {t.p0, t.p1, t.p2}) append_vec(out, "v", {p.x, p.y, p.z});
+    for (const Vec3& p : {t.p0, t.p1, t.p2}) append_float_line(out, "v", {p.x, p.y, p.z});
     // A zero shading normal means "geometric"; OBJ has no such thing, so write the geometric one.
     const Vec3 geometric = normalize(triangle_normal(t));
     if (normals) {
       for (const Vec3& n : g.triangle_normals[i]) {
         const Vec3 m = dot(n, n) > 0.f ? n : geometric;
-        append_vec(out, "vn", {m.x, m.y, m.z});
+        append_float_line(out, "vn", {m.x, m.y, m.z});
       }
     }
     if (uvs) {
-      for (const Vec2& uv : g.triangle_uvs[i]) append_vec(out, "vt", {uv.x, uv.y});
+      for (const Vec2& uv : g.triangle_uvs[i]) append_float_line(out, "vt", {uv.x, uv.y});
     }
     out += 'f';
     for (int k = 0; k < 3; ++k) {

@@ -2,6 +2,7 @@
 /// \file
 /// Decimal text for floats that every raylab reader turns back into the same float.
 
+#include <initializer_list>
 #include <string>
 
 namespace raylab {
@@ -13,5 +14,9 @@ std::string float_text(float v);
 
 /// Appends float_text(v) to `out` (no allocation for the common case).
 void append_float_text(std::string& out, float v);
+
+/// Appends the line "KEYWORD v1 v2 ..." with each value as float_text writes it: the line of
+/// the OBJ and MTL writers.
+void append_float_line(std::string& out, const char* keyword, std::initializer_list<float> values);
 
 }  // namespace raylab
