@@ -15,6 +15,18 @@
 
 namespace raylab::cli_test {
 
+// In a forked child: becomes `raylab args` (exit 127 if that fails).
+[[noreturn]] inline void exec_raylab(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  std::string binary = raylab::test::raylab_binary();
+  argv.push_back(binary.data());
+  std::vector<std::string> copy = args;
+  for (std::string& a : copy) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  ::execv(binary.c_str(), argv.data());
+  ::_exit(127);
+}
+
 // A raylab process started in the background, its streams going to files in `work`.
 class Background {
  public:
@@ -24,14 +36,7 @@ class Background {
       const int fd = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       ::dup2(fd, STDERR_FILENO);
       ::dup2(fd, STDOUT_FILENO);
-      std::vector<char*> argv;
-      std::string binary = raylab::test::raylab_binary();
-      argv.push_back(binary.data());
-      std::vector<std::string> copy = args;
-      for (std::string& a : copy) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      ::execv(binary.c_str(), argv.data());
-      ::_exit(127);
+      exec_raylab(args);
     }
   }
   void signal(int sig) const { ::kill(m_pid, sig); }

@@ -108,14 +108,7 @@ class OnTerminal {
     size.ws_col = static_cast<unsigned short>(columns);
     m_pid = ::forkpty(&m_master, nullptr, nullptr, &size);
     if (m_pid == 0) {
-      std::vector<char*> argv;
-      std::string binary = raylab::test::raylab_binary();
-      argv.push_back(binary.data());
-      std::vector<std::string> copy = args;
-      for (std::string& a : copy) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      ::execv(binary.c_str(), argv.data());
-      ::_exit(127);
+      exec_raylab(args);
     }
   }
   ~OnTerminal() { ::close(m_master); }
