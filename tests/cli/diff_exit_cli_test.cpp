@@ -80,10 +80,13 @@ TEST_F(DiffCli, SizesThatDifferNameBothSizes) {
   EXPECT_EQ(r.err, a + ": size 10x10 differs from " + b + "'s 20x20\n");
 }
 
-TEST_F(DiffCli, UnwritableDifferenceImageIsNotADifferenceEither) {
+// Like every output, an --image that cannot be written is refused before the work: a usage
+// error, not the answer "they differ".
+TEST_F(DiffCli, UnwritableDifferenceImageIsAUsageErrorNotADifference) {
   const std::string a = image("a.png", 4, 3, 0.f), b = image("b.png", 4, 3, 1.f);
   const CliResult r = diff(a, b, "--image '" + out_file("none/d.png") + "'");
-  EXPECT_EQ(r.code, kCannotCompare) << r.err;
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
   expect_out_empty();
 }
 
