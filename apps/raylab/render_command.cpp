@@ -166,8 +166,13 @@ void add_image_options(CLI::App& cmd, RenderArgs& args) {
           ->capture_default_str();
   cmd.add_option("-o,--output", args.output, "Output image; format from the extension: .png .exr .pfm")
       ->capture_default_str();
-  cmd.add_option("--width", args.settings.width, "Image width in pixels")->check(CLI::Range(1, 32768));
-  cmd.add_option("--height", args.settings.height, "Image height in pixels")->check(CLI::Range(1, 32768));
+  cmd.add_option("--width", args.settings.width,
+                 "Image width in pixels; given alone, the height follows the scene's aspect ratio; both in "
+                 "another shape widen the view, never crop it")
+      ->check(CLI::Range(1, 32768));
+  cmd.add_option("--height", args.settings.height,
+                 "Image height in pixels; given alone, the width follows the scene's aspect ratio")
+      ->check(CLI::Range(1, 32768));
 }
 
 // Where the samples go and how they become pixels: --spp, --sampler, --filter, the adaptive
