@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("bench")) return run_bench();
   } catch (const raylab::UsageError& e) {
     if (!raylab::dist::launched_by_mpi() || raylab::dist::launcher_rank() == 0) {
-      std::fprintf(stderr, "raylab: %s\n", e.what());
+      std::fputs(raylab::cli::usage_error_message(app, e.what()).c_str(), stderr);
     }
     return raylab::cli::kExitUsageError;
   } catch (const raylab::InputError& e) {

@@ -8,6 +8,11 @@
 namespace raylab::cli {
 namespace {
 
+// A usage error's two lines: what is wrong, then the help that shows how to say it.
+std::string with_help_hint(const std::string& message, const std::string& help) {
+  return "raylab: " + message + "\nRun '" + help + "' for usage.\n";
+}
+
 // A word on the command line that names an option, not a value such as -1 or '-' (stdout).
 bool looks_like_option(const std::string& arg) {
   if (arg.size() < 2 || arg[0] != '-') return false;
@@ -102,7 +107,12 @@ std::string explain_parse_error(const CLI::App& app, const CLI::ParseError& erro
       message = unknown_option_message(scope, *unknown);
     }
   }
-  return "raylab: " + message + "\nRun '" + help + "' for usage.\n";
+  return with_help_hint(message, help);
+}
+
+std::string usage_error_message(const CLI::App& app, const std::string& message) {
+  const std::vector<CLI::App*> ran = app.get_subcommands();
+  return with_help_hint(message, ran.empty() ? "raylab --help" : "raylab " + ran.front()->get_name() + " --help");
 }
 
 std::vector<std::string> expand_help_command(const CLI::App& app, std::vector<std::string> args) {

@@ -18,6 +18,10 @@ namespace raylab::cli {
 std::string explain_parse_error(const CLI::App& app, const CLI::ParseError& error,
                                 const std::vector<std::string>& args);
 
+/// The message of a usage error found after parsing (a raylab::UsageError's `message`), with
+/// the line naming the help of the command that was run, as explain_parse_error ends.
+std::string usage_error_message(const CLI::App& app, const std::string& message);
+
 /// `args` with `help` and `help CMD` turned into `--help` and `CMD --help`, so that `raylab help
 /// render` prints exactly `raylab render --help`; `help NAME` of an unknown NAME becomes `NAME`,
 /// which the parser refuses like any unknown command. Other arguments are returned unchanged.

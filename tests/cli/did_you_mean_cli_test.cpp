@@ -24,6 +24,18 @@ TEST_F(Cli, MisspelledCommandGetsTheNearestOne) {
   EXPECT_EQ(first_line(run("qualty").err), "raylab: unknown command 'qualty'; did you mean 'quality'?");
 }
 
+// Options that parse but do not go together are found by the command itself, after parsing;
+// their message names that command's help too.
+TEST_F(Cli, UsageErrorsFoundAfterParsingNameTheCommandsHelp) {
+  const CliResult render = run("render demo --spd-facing viewer -o '" + out_file("x.png") + "'");
+  EXPECT_EQ(render.code, 2);
+  EXPECT_EQ(render.err, "raylab: --spd-facing applies to --spd-protocol only\nRun 'raylab render --help' for usage.\n");
+  expect_out_empty();
+  const CliResult compare = run("compare demo --plot '" + out_file("chart.png") + "'");
+  EXPECT_EQ(compare.code, 2);
+  EXPECT_NE(compare.err.find("\nRun 'raylab compare --help' for usage.\n"), std::string::npos) << compare.err;
+}
+
 TEST_F(Cli, FarFromEveryCommandGetsNoGuess) {
   const CliResult r = run("paint demo");
   EXPECT_EQ(r.code, 2);
