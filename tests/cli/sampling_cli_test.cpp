@@ -16,6 +16,19 @@ TEST_F(Cli, SppRoundingIsAnnounced) {
   EXPECT_NE(r.err.find("9 spp jittered"), std::string::npos) << r.err;
 }
 
+// A bare mesh renders at 4 spp by default; --sampler center alone asks for one sample, not for
+// the default rounded down with a notice about a --spp nobody gave. An explicit --spp still is.
+TEST_F(Cli, CenterSamplerAloneTakesOneSampleWithoutANotice) {
+  const std::string mesh = obj("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const CliResult alone = run("render '" + mesh + "' --width 16 --sampler center -o " + out_file("a.png"));
+  ASSERT_EQ(alone.code, 0) << alone.err;
+  EXPECT_EQ(alone.err.find("rounded"), std::string::npos) << alone.err;
+  EXPECT_NE(alone.err.find("1 spp center"), std::string::npos) << alone.err;
+  const CliResult given = run("render '" + mesh + "' --width 16 --sampler center --spp 4 -o " + out_file("b.png"));
+  ASSERT_EQ(given.code, 0) << given.err;
+  EXPECT_NE(given.err.find("--spp 4 rounded to 1 for the center sampler"), std::string::npos) << given.err;
+}
+
 TEST_F(Cli, AdaptiveReportsItsRaysAndWritesTheSampleCounts) {
   const CliResult r =
       run("render aa-edges --width 64 --height 48 --sampler adaptive --aov samples -o " + out_file("a.exr"));

@@ -25,7 +25,8 @@ struct SettingsOverride {
   std::optional<int> aa_depth;         ///< adaptive samplers: subdivision depth
 };
 
-/// Sets every member `over` gives on `settings`, leaving the others as they are. No checks: the
+/// Sets every member `over` gives on `settings`, leaving the others as they are; a sampler that
+/// takes one sample per pixel given without a count also sets spp to 1. No checks: the
 /// values go through check_sampling_settings and render() as the scene's own would.
 void apply_settings_override(RenderSettings& settings, const SettingsOverride& over);
 
