@@ -12,4 +12,13 @@ float linear_to_srgb(float v) {
 
 float srgb_to_linear(float e) { return e <= 0.04045f ? e / 12.92f : std::pow((e + 0.055f) / 1.055f, 2.4f); }
 
+const std::array<float, 256>& srgb8_to_linear_table() {
+  static const std::array<float, 256> table = [] {
+    std::array<float, 256> t{};
+    for (int i = 0; i < 256; ++i) t[i] = srgb_to_linear(static_cast<float>(i) / 255.f);
+    return t;
+  }();
+  return table;
+}
+
 }  // namespace raylab

@@ -67,21 +67,23 @@ void orbit(CameraSpec& camera, float degrees) {
 
 // Usage errors of a camera that cannot render, naming the flags that made it.
 void check_camera(const CameraSpec& c, const CameraOverride& over) {
-  const Vec3 forward = c.at - c.from;
-  if (!(dot(forward, forward) > 0.f)) {
-    const std::string what = over.from && over.at ? "--camera-from and --camera-at are the same point"
-                             : over.from ? "--camera-from " + format_vec3(c.from) + " is the point the camera looks at"
-                             : over.at   ? "--camera-at " + format_vec3(c.at) + " is the camera's eye"
-                                         : "the camera's eye is the point it looks at";
-    throw UsageError(what + ": the camera would look nowhere");
-  }
   if (over.up && !(dot(*over.up, *over.up) > 0.f)) throw UsageError("--camera-up must not be 0,0,0");
-  const Vec3 side = cross(forward, c.up);
-  if (!(dot(side, side) > 0.f)) {
-    throw UsageError(fmt::format(
-        "{} {} is parallel to the viewing direction (from {} to {}): give another "
-        "--camera-up",
-        over.up ? "--camera-up" : "the camera's up", format_vec3(c.up), format_vec3(c.from), format_vec3(c.at)));
+  switch (camera_fault(c)) {
+    case CameraFault::kNone:
+      return;
+    case CameraFault::kEyeAtTarget: {
+      const std::string what = over.from && over.at ? "--camera-from and --camera-at are the same point"
+                               : over.from
+                                   ? "--camera-from " + format_vec3(c.from) + " is the point the camera looks at"
+                               : over.at ? "--camera-at " + format_vec3(c.at) + " is the camera's eye"
+                                         : "the camera's eye is the point it looks at";
+      throw UsageError(what + ": the camera would look nowhere");
+    }
+    case CameraFault::kUpAlongView:
+      throw UsageError(fmt::format(
+          "{} {} is parallel to the viewing direction (from {} to {}): give another "
+          "--camera-up",
+          over.up ? "--camera-up" : "the camera's up", format_vec3(c.up), format_vec3(c.from), format_vec3(c.at)));
   }
 }
 

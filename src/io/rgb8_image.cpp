@@ -19,8 +19,7 @@ void write_png(const Rgb8Image& image, const std::string& path) {
   // Through the film writer, which encodes linear values to sRGB: decoding each byte to linear
   // first makes the round trip exact (tested), and keeps one PNG writer and its atomic write.
   Film film(image.width, image.height);
-  std::array<float, 256> linear{};
-  for (int i = 0; i < 256; ++i) linear[i] = srgb_to_linear(static_cast<float>(i) / 255.f);
+  const std::array<float, 256>& linear = srgb8_to_linear_table();
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x) {
       const Rgb8 c = image.at(x, y);

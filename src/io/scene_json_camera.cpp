@@ -12,10 +12,11 @@ constexpr std::int64_t kMaxFrame = 1'000'000;
 
 // A camera that cannot render is a mistake at the object that describes it, or at its 'up'.
 void check_camera(const Node& n, const CameraSpec& c, const std::string& what) {
-  const Vec3 forward = c.at - c.from;
-  if (!(dot(forward, forward) > 0.f)) n.fail(what + " 'from' and 'at' are the same point");
-  const Vec3 side = cross(forward, c.up);
-  if (!(dot(side, side) > 0.f)) n.fail_at("up", what + " 'up' is parallel to the viewing direction (or zero)");
+  const CameraFault fault = camera_fault(c);
+  if (fault == CameraFault::kEyeAtTarget) n.fail(what + " 'from' and 'at' are the same point");
+  if (fault == CameraFault::kUpAlongView) {
+    n.fail_at("up", what + " 'up' is parallel to the viewing direction (or zero)");
+  }
 }
 
 // One key: a field the key does not give is the camera object's own.

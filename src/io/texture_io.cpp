@@ -124,16 +124,6 @@ ImageSize checked_header_size(std::span<const unsigned char> bytes, ImageFormat 
   return size;
 }
 
-// sRGB-encoded 8-bit value to linear, once per value rather than once per texel channel.
-const std::array<float, 256>& srgb8_to_linear_table() {
-  static const std::array<float, 256> table = [] {
-    std::array<float, 256> t{};
-    for (int i = 0; i < 256; ++i) t[i] = srgb_to_linear(static_cast<float>(i) / 255.f);
-    return t;
-  }();
-  return table;
-}
-
 // Decodes `bytes` to RGB with `load` (stb_image's 8-bit or 16-bit decoder, whose samples the
 // image keeps) and maps each sample to linear with `to_linear`. The decoded size must be the one
 // the header promised, on which the size limits were checked.

@@ -26,4 +26,17 @@ struct CameraSpec {
   float framed_aspect = 0.f;
 };
 
+/// Why a camera cannot render, if it cannot: its eye is the point it looks at (no viewing
+/// direction), or its up is zero or along the viewing direction (no sideways direction).
+enum class CameraFault { kNone, kEyeAtTarget, kUpAlongView };
+
+/// The one test of a camera that cannot render, for every reader of cameras (scene files, the
+/// command line's camera flags) to word in its own terms.
+inline CameraFault camera_fault(const CameraSpec& c) {
+  const Vec3 forward = c.at - c.from;
+  if (!(dot(forward, forward) > 0.f)) return CameraFault::kEyeAtTarget;
+  const Vec3 side = cross(forward, c.up);
+  return dot(side, side) > 0.f ? CameraFault::kNone : CameraFault::kUpAlongView;
+}
+
 }  // namespace raylab
