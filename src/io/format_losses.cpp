@@ -25,12 +25,10 @@ bool nonzero(Color c) { return c.x != 0.f || c.y != 0.f || c.z != 0.f; }
 std::size_t used_materials(const Scene& scene) {
   std::vector<bool> used(scene.materials.size(), false);
   const Geometry& g = scene.geometry;
-  for (const auto* ids :
-       {&g.triangle_objects, &g.sphere_objects, &g.cylinder_objects, &g.disk_objects, &g.quad_objects}) {
-    for (const std::uint32_t object : *ids) {
-      if (object < scene.objects.size() && scene.objects[object].material < used.size()) {
-        used[scene.objects[object].material] = true;
-      }
+  for (std::uint32_t prim = 0; prim < g.size(); ++prim) {
+    const std::uint32_t object = g.object_of(prim);
+    if (object < scene.objects.size() && scene.objects[object].material < used.size()) {
+      used[scene.objects[object].material] = true;
     }
   }
   return static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
