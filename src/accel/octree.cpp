@@ -22,14 +22,17 @@
 #include "raylab/core/stopwatch.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 #include "leaf_test.h"
 #include "mailbox.h"
 #include "traversal_common.h"
+#include "wide_bvh_leaf.h"
 
 namespace raylab {
 namespace {
@@ -50,14 +53,18 @@ inline float min3(float a, float b, float c) {
   return m < c ? m : c;
 }
 
-// One interior node on the way down: its crossings and the child being visited. 48 bytes.
-// Crossings of its near planes are not kept: the traversal only needs where the ray is now.
+// One interior node on the way down: its crossings, the children worth entering and the child
+// being visited. Crossings of its near planes are not kept: the traversal only needs where the
+// ray is now.
 struct Frame {
   float tm[3], t1[3];         // crossings of its middle and far planes, mirrored frame
   float lo[3];                // its low corner on the lattice (integers, exact in float up to 2^24)
   float half;                 // half its edge, in lattice steps
   std::uint32_t first_child;  // index of its child 0
+  unsigned enter;             // bit c: the ray enters child c's content box (memory numbering)
+  unsigned ahead;             // the same children in the mirrored numbering, for the walk's order
   int child;                  // the child being visited, in the mirrored numbering
+  float t_enter[8];           // where the ray enters each child's content box (memory numbering)
 };
 
 // Where the ray crosses the tree's lattice planes. Usually step * k + b, an affine function of
@@ -91,7 +98,8 @@ class LatticeCrossings {
 };
 
 // Completes frame `g` for interior node `node` of edge `size` (its far crossings and lattice
-// corner are set): the middle crossings, and the child holding the ray at t_cur. A ray in a
+// corner are set): the middle crossings, and the child holding the ray at t_cur. Which children
+// are worth entering is the caller's (the box test). A ray in a
 // centre plane and parallel to it may take either half (the margin put what lies on the plane in
 // both); it takes the lower one of the mirrored frame.
 inline void open_frame(Frame& g, const OctreeNode& node, float size, const LatticeCrossings& crossing, float t_cur) {
@@ -100,6 +108,19 @@ inline void open_frame(Frame& g, const OctreeNode& node, float size, const Latti
   for (int i = 0; i < 3; ++i) g.tm[i] = crossing.at(i, g.lo[i] + g.half, kInf);
   g.child = (g.tm[0] <= t_cur ? 1 : 0) | (g.tm[1] <= t_cur ? 2 : 0) | (g.tm[2] <= t_cur ? 4 : 0);
 }
+
+// `mask` with bit c moved to bit c ^ octant: the mirrored numbering of a set of children. XOR
+// with octant bit k swaps the children two to the k apart, so each set bit swaps bit groups.
+inline unsigned mirrored_mask(unsigned mask, int octant) {
+  if (octant & 1) mask = ((mask & 0x55u) << 1) | ((mask >> 1) & 0x55u);
+  if (octant & 2) mask = ((mask & 0x33u) << 2) | ((mask >> 2) & 0x33u);
+  if (octant & 4) mask = ((mask & 0x0fu) << 4) | ((mask >> 4) & 0x0fu);
+  return mask;
+}
+
+// The children (mirrored numbering) the walk can still reach after child c: the ray only ever
+// moves to higher halves, so those whose bits include all of c's, c excluded.
+constexpr unsigned kLaterChildren[8] = {0xfeu, 0xa8u, 0xc8u, 0x80u, 0xe0u, 0x80u, 0x80u, 0x00u};
 
 // Edge of the root in lattice steps.
 constexpr float kRootLatticeSteps = static_cast<float>(kOctreeLatticeSteps);
@@ -111,7 +132,8 @@ inline float enter_root(Frame& root, const LatticeCrossings& crossing, int octan
   float t_enter = -kInf;
   for (int i = 0; i < 3; ++i) {
     const bool mirrored = (octant >> i) & 1;
-    t_enter = std::fmax(t_enter, crossing.at(i, mirrored ? kRootLatticeSteps : 0.f, -kInf));
+    const float t = crossing.at(i, mirrored ? kRootLatticeSteps : 0.f, -kInf);  // never NaN
+    t_enter = t > t_enter ? t : t_enter;
     root.t1[i] = crossing.at(i, mirrored ? 0.f : kRootLatticeSteps, kInf);
     root.lo[i] = 0.f;
   }
@@ -123,6 +145,11 @@ inline float enter_root(Frame& root, const LatticeCrossings& crossing, int octan
 struct OptionalMailbox {
   std::optional<Mailboxes::RayStamp> stamp;
   bool first_visit(std::uint32_t slot) { return !stamp || stamp->first_visit(slot); }
+};
+
+// The `on_cell` of a query: hears nothing, costs nothing.
+struct IgnoreCells {
+  void operator()(const Box3&, bool) const {}
 };
 
 }  // namespace
@@ -144,6 +171,12 @@ Octree::~Octree() = default;
 
 template <bool kAnyHit, bool kCount>
 bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
+  return walk<kAnyHit, kCount>(ray, hit, stats, IgnoreCells{});
+}
+
+template <bool kAnyHit, bool kCount, class OnCell>
+bool Octree::walk(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) const {
+  constexpr bool kRecord = !std::is_same_v<std::decay_t<OnCell>, IgnoreCells>;
   TraversalCounters counters;
   const float tmin = ray.tmin;
   float tmax = ray.tmax;
@@ -176,6 +209,18 @@ bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
 
   Frame stack[kOctreeDepthLimit];
   Frame* f = stack;
+  // Tells on_cell of child `actual` (memory numbering) of the innermost open node.
+  auto report_child = [&](int actual, bool tested) {
+    if constexpr (kRecord) {
+      std::uint32_t lo[3];
+      for (int i = 0; i < 3; ++i) lo[i] = static_cast<std::uint32_t>(f->lo[i] + (((actual >> i) & 1) ? f->half : 0.f));
+      const std::uint32_t size = static_cast<std::uint32_t>(f->half);
+      on_cell(Box3{{m_tree.plane(0, lo[0]), m_tree.plane(1, lo[1]), m_tree.plane(2, lo[2])},
+                   {m_tree.plane(0, lo[0] + size), m_tree.plane(1, lo[1] + size), m_tree.plane(2, lo[2] + size)}},
+              tested);
+    }
+  };
+
   const float t_enter = enter_root(*f, crossing, octant);
   const float t_leave = min3(f->t1[0], f->t1[1], f->t1[2]);
   const float limit = visit_limit(tmax);
@@ -184,38 +229,66 @@ bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   if (!(t_cur <= (t_leave < limit ? t_leave : limit))) {
     return finish_traversal<kCount>(false, tmax, best, {}, ray, hit, stats);
   }
-  if (m_config.mailbox) mailbox.stamp.emplace(m_mailboxes->begin_ray());
   if constexpr (kCount) ++counters.nodes_visited;
   if (nodes[0].is_leaf()) {
+    if constexpr (kRecord) on_cell(m_tree.cell_box(std::array<std::uint32_t, 3>{0, 0, 0}.data(), 0), true);
+    if (m_config.mailbox) mailbox.stamp.emplace(m_mailboxes->begin_ray());
     test_leaf(nodes[0]);
     return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
   }
 
+  // The children's content boxes decide which children the ray enters at all: one 8-wide slab
+  // test per interior node (the wide BVH's), conservative as the BVH's is.
+  const WideBoxRay<8> box_ray(ray);
   open_frame(*f, nodes[0], kRootLatticeSteps, crossing, t_cur);
+  f->enter = box_ray.test(m_tree.boxes[0], tmin, tmax, f->t_enter);
+  f->ahead = mirrored_mask(f->enter, octant);
+  if (f->enter == 0) {
+    if constexpr (kRecord) on_cell(m_tree.cell_box(std::array<std::uint32_t, 3>{0, 0, 0}.data(), 0), false);
+    return finish_traversal<kCount>(false, tmax, best, counters, ray, hit, stats);
+  }
+  // The stamp is taken only once the ray reaches some content: rays that miss never touch the mailboxes.
+  if (m_config.mailbox) mailbox.stamp.emplace(m_mailboxes->begin_ray());
 
   for (;;) {
-    // Visit the current child of the innermost open node.
+    // Visit the current child of the innermost open node, unless the ray misses its content or,
+    // since the node was opened, a hit closer than the content was found.
     const int actual = f->child ^ octant;
-    const OctreeNode node = nodes[f->first_child + static_cast<std::uint32_t>(actual)];
-    if constexpr (kCount) ++counters.nodes_visited;
-    if (!node.is_leaf()) {
-      Frame& g = f[1];
-      for (int i = 0; i < 3; ++i) {
-        g.t1[i] = ((f->child >> i) & 1) ? f->t1[i] : f->tm[i];
-        g.lo[i] = f->lo[i] + (((actual >> i) & 1) ? f->half : 0.f);
+    if (((f->enter >> actual) & 1) && f->t_enter[actual] <= tmax * kSlabWiden) {
+      const OctreeNode node = nodes[f->first_child + static_cast<std::uint32_t>(actual)];
+      if constexpr (kCount) ++counters.nodes_visited;
+      if (!node.is_leaf()) {
+        Frame& g = f[1];
+        for (int i = 0; i < 3; ++i) {
+          g.t1[i] = ((f->child >> i) & 1) ? f->t1[i] : f->tm[i];
+          g.lo[i] = f->lo[i] + (((actual >> i) & 1) ? f->half : 0.f);
+        }
+        open_frame(g, node, f->half, crossing, t_cur);
+        g.enter = box_ray.test(m_tree.child_boxes(node), tmin, tmax, g.t_enter);
+        if (g.enter != 0) {
+          g.ahead = mirrored_mask(g.enter, octant);
+          ++f;
+          continue;
+        }
+        report_child(actual, false);
+      } else {
+        report_child(actual, true);
+        if (test_leaf(node)) return finish_traversal<kCount>(true, tmax, best, counters, ray, hit, stats);
       }
-      open_frame(g, node, f->half, crossing, t_cur);
-      ++f;
-      continue;
-    }
-    if (node.count != 0 && test_leaf(node)) {
-      return finish_traversal<kCount>(true, tmax, best, counters, ray, hit, stats);
+    } else {
+      report_child(actual, false);
     }
 
     // Step to the next cell along the ray: leave the current child through its nearest exit
     // plane; a child already in the upper half along that axis leaves its parent too.
     for (;;) {
       const int c = f->child;
+      // No child the ray enters lies ahead in this node: leave it without stepping through the rest.
+      if ((f->ahead & kLaterChildren[c]) == 0) {
+        if (f == stack) return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
+        --f;
+        continue;
+      }
       const float ex = (c & 1) ? f->t1[0] : f->tm[0];
       const float ey = (c & 2) ? f->t1[1] : f->tm[1];
       const float ez = (c & 4) ? f->t1[2] : f->tm[2];
@@ -230,18 +303,20 @@ bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
       if ((crossed & c) == 0) {
         f->child = c | crossed;
         t_cur = t_exit;
-        // Empty leaves hold nothing to test: step on through them without a visit of their own.
-        if (const OctreeNode& next = nodes[f->first_child + static_cast<std::uint32_t>(f->child ^ octant)];
-            next.count == 0) {
-          if constexpr (kCount) ++counters.nodes_visited;
-          continue;
-        }
         break;
       }
       if (f == stack) return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
       --f;
     }
   }
+}
+
+std::vector<WalkedCell> Octree::cells_on_ray(const Ray& ray) const {
+  std::vector<WalkedCell> cells;
+  Ray r = ray;
+  Hit h;
+  walk<false, false>(r, h, nullptr, [&](const Box3& box, bool tested) { cells.push_back({box, tested}); });
+  return cells;
 }
 
 // The four entry points, compiled here where the kernel is defined.
@@ -251,9 +326,9 @@ AccelInfo Octree::info() const {
   AccelInfo info;
   info.name = "octree";
   info.build_seconds = m_build_seconds;
-  info.memory_bytes = m_tree.nodes.capacity() * sizeof(OctreeNode) +
-                      (m_tree.refs.capacity() + m_tree.ids.capacity()) * sizeof(std::uint32_t) +
-                      m_mailboxes->bytes_per_thread();
+  info.memory_bytes =
+      m_tree.nodes.capacity() * sizeof(OctreeNode) + m_tree.boxes.capacity() * sizeof(OctreeChildBoxes) +
+      (m_tree.refs.capacity() + m_tree.ids.capacity()) * sizeof(std::uint32_t) + m_mailboxes->bytes_per_thread();
   info.node_count = m_tree.nodes.size();
   info.leaf_count = m_tree.leaf_count;
   info.primitive_count = m_tree.ids.size();

@@ -171,6 +171,8 @@ void for_each_node(const OctreeTree& tree, const std::function<void(std::uint32_
 
 Box3 enlarged(const Box3& b, float margin) { return {b.lo - Vec3(margin), b.hi + Vec3(margin)}; }
 
+Box3 clipped(const Box3& b, const Box3& to) { return {max(b.lo, to.lo), min(b.hi, to.hi)}; }
+
 bool boxes_overlap(const Box3& a, const Box3& b) {
   return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y && a.lo.z <= b.hi.z &&
          b.lo.z <= a.hi.z;
@@ -203,8 +205,10 @@ void check_tree(const Geometry& g, const OctreeTree& tree, const OctreeConfig& c
   const Box3 root = tree.cell_box(std::array<std::uint32_t, 3>{0, 0, 0}.data(), 0);
   EXPECT_TRUE(root.contains(tree.bounds.lo - Vec3(tree.margin)) && root.contains(tree.bounds.hi + Vec3(tree.margin)))
       << "the root cell must hold the primitives with the margin to spare";
+  // One edge length for every axis; the corners, root_lo + root_size, round separately per axis.
   const Vec3 e = root.extent();
-  EXPECT_TRUE(e.x == e.y && e.y == e.z) << "the root cell is a cube";
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(e[a], tree.root_size, 4e-7f * tree.root_size) << "the root cell is a cube";
+  EXPECT_GE(tree.root_size, max_component(tree.bounds.extent())) << "the root cell holds the bounds";
   for_each_node(tree, [&](std::uint32_t index, int depth, const std::uint32_t* lo) {
     ++seen[index];
     const OctreeNode& node = tree.nodes[index];
@@ -221,17 +225,26 @@ void check_tree(const Geometry& g, const OctreeTree& tree, const OctreeConfig& c
     EXPECT_TRUE(std::is_sorted(r, r + node.count) && std::adjacent_find(r, r + node.count) == r + node.count)
         << "references in ascending order, each once";
     if (depth < c.max_depth && node.count > static_cast<std::uint32_t>(c.max_items)) {
-      // Only the gain rule may leave such a leaf: its octants would hold >= ratio x its references.
+      // Only the split rule may leave such a leaf: recompute what its children would hold, from
+      // the exact overlap test, and ask the rule.
       const std::uint32_t half = kOctreeLatticeSteps >> (depth + 1);
-      std::size_t total = 0;
+      std::array<std::size_t, 8> counts{};
+      std::array<Box3, 8> contents;
       for (std::uint32_t o = 0; o < 8; ++o) {
         const std::uint32_t child_lo[3] = {lo[0] + (o & 1 ? half : 0), lo[1] + (o & 2 ? half : 0),
                                            lo[2] + (o & 4 ? half : 0)};
         const Box3 octant = enlarged(tree.cell_box(child_lo, depth + 1), tree.margin);
-        for (std::uint32_t k = 0; k < node.count; ++k) total += overlaps_box(g, tree.ids[r[k]], octant) ? 1 : 0;
+        for (std::uint32_t k = 0; k < node.count; ++k) {
+          if (!overlaps_box(g, tree.ids[r[k]], octant)) continue;
+          ++counts[o];
+          contents[o].extend(clipped(g.bounds(tree.ids[r[k]]), octant));
+        }
       }
-      EXPECT_GE(total, std::size_t{kOctreeSplitGainRatio} * node.count)
-          << "leaf " << index << " at depth " << depth << " holds " << node.count << " > K without the gain rule";
+      const Box3 cell = enlarged(tree.cell_box(lo, depth), tree.margin);
+      Box3 content;
+      for (std::uint32_t k = 0; k < node.count; ++k) content.extend(clipped(g.bounds(tree.ids[r[k]]), cell));
+      EXPECT_FALSE(octree_split_pays(node.count, content, counts, contents))
+          << "leaf " << index << " at depth " << depth << " holds " << node.count << " > K, and a split would pay";
     }
   });
   // Every primitive that really touches a leaf's cell is referenced there (the margin only adds).
