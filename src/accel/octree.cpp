@@ -25,6 +25,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <type_traits>
@@ -240,8 +241,19 @@ bool Octree::walk(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) c
   // The children's content boxes decide which children the ray enters at all: one 8-wide slab
   // test per interior node (the wide BVH's), conservative as the BVH's is.
   const WideBoxRay<8> box_ray(ray);
+  // That test widens exit distances as t * kSlabWiden, which narrows them below 0: a ray asking
+  // for hits behind its origin (tmin < 0, rare) enters every child that holds something instead.
+  const bool behind = tmin < 0.f;
+  auto test_children = [&](const OctreeChildBoxes& boxes, Frame& g) {
+    if (!behind) {
+      g.enter = box_ray.test(boxes, tmin, tmax, g.t_enter);
+    } else {
+      g.enter = WideBoxRay<8>::occupied_slots(boxes);
+      std::fill(std::begin(g.t_enter), std::end(g.t_enter), -kInf);
+    }
+  };
   open_frame(*f, nodes[0], kRootLatticeSteps, crossing, t_cur);
-  f->enter = box_ray.test(m_tree.boxes[0], tmin, tmax, f->t_enter);
+  test_children(m_tree.boxes[0], *f);
   f->ahead = mirrored_mask(f->enter, octant);
   if (f->enter == 0) {
     if constexpr (kRecord) on_cell(m_tree.cell_box(std::array<std::uint32_t, 3>{0, 0, 0}.data(), 0), false);
@@ -254,7 +266,7 @@ bool Octree::walk(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) c
     // Visit the current child of the innermost open node, unless the ray misses its content or,
     // since the node was opened, a hit closer than the content was found.
     const int actual = f->child ^ octant;
-    if (((f->enter >> actual) & 1) && f->t_enter[actual] <= tmax * kSlabWiden) {
+    if (((f->enter >> actual) & 1) && (f->t_enter[actual] <= tmax * kSlabWiden || behind)) {
       const OctreeNode node = nodes[f->first_child + static_cast<std::uint32_t>(actual)];
       if constexpr (kCount) ++counters.nodes_visited;
       if (!node.is_leaf()) {
@@ -264,7 +276,7 @@ bool Octree::walk(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) c
           g.lo[i] = f->lo[i] + (((actual >> i) & 1) ? f->half : 0.f);
         }
         open_frame(g, node, f->half, crossing, t_cur);
-        g.enter = box_ray.test(m_tree.child_boxes(node), tmin, tmax, g.t_enter);
+        test_children(m_tree.child_boxes(node), g);
         if (g.enter != 0) {
           g.ahead = mirrored_mask(g.enter, octant);
           ++f;
