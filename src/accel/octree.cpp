@@ -110,14 +110,24 @@ inline void open_frame(Frame& g, const OctreeNode& node, float size, const Latti
   g.child = (g.tm[0] <= t_cur ? 1 : 0) | (g.tm[1] <= t_cur ? 2 : 0) | (g.tm[2] <= t_cur ? 4 : 0);
 }
 
-// `mask` with bit c moved to bit c ^ octant: the mirrored numbering of a set of children. XOR
-// with octant bit k swaps the children two to the k apart, so each set bit swaps bit groups.
-inline unsigned mirrored_mask(unsigned mask, int octant) {
-  if (octant & 1) mask = ((mask & 0x55u) << 1) | ((mask >> 1) & 0x55u);
-  if (octant & 2) mask = ((mask & 0x33u) << 2) | ((mask >> 2) & 0x33u);
-  if (octant & 4) mask = ((mask & 0x0fu) << 4) | ((mask >> 4) & 0x0fu);
-  return mask;
-}
+// kMirrored[octant][mask]: `mask` with bit c moved to bit c ^ octant, the mirrored numbering of a
+// set of children. One table lookup per opened node (2 KiB, which stays in the L1 cache) where
+// three conditional bit-group swaps cost 5% of a mesh ray's instructions (callgrind).
+struct MirroredMasks {
+  std::uint8_t bits[8][256];
+  constexpr MirroredMasks() : bits{} {
+    for (int octant = 0; octant < 8; ++octant) {
+      for (int mask = 0; mask < 256; ++mask) {
+        int m = 0;
+        for (int c = 0; c < 8; ++c) m |= ((mask >> c) & 1) << (c ^ octant);
+        bits[octant][mask] = static_cast<std::uint8_t>(m);
+      }
+    }
+  }
+};
+constexpr MirroredMasks kMirrored;
+
+inline unsigned mirrored_mask(unsigned mask, int octant) { return kMirrored.bits[octant][mask]; }
 
 // The children (mirrored numbering) the walk can still reach after child c: the ray only ever
 // moves to higher halves, so those whose bits include all of c's, c excluded.
