@@ -32,6 +32,7 @@
 
 #include "leaf_test.h"
 #include "mailbox.h"
+#include "raylab/simd/float4.h"
 #include "traversal_common.h"
 #include "wide_bvh_leaf.h"
 
@@ -58,8 +59,10 @@ inline float min3(float a, float b, float c) {
 // being visited. Crossings of its near planes are not kept: the traversal only needs where the
 // ray is now.
 struct Frame {
-  float tm[3], t1[3];         // crossings of its middle and far planes, mirrored frame
-  float lo[3];                // its low corner on the lattice (integers, exact in float up to 2^24)
+  // Per axis in lanes 0-2 (lane 3 stays 0), loaded and stored as simd::Float4.
+  alignas(16) float tm[4];    // crossings of its middle planes, mirrored frame
+  alignas(16) float t1[4];    // crossings of its far planes, mirrored frame
+  alignas(16) float lo[4];    // its low corner on the lattice (integers, exact in float up to 2^24)
   float half;                 // half its edge, in lattice steps
   std::uint32_t first_child;  // index of its child 0
   unsigned enter;             // bit c: the ray enters child c's content box (memory numbering)
@@ -91,12 +94,40 @@ class LatticeCrossings {
     return std::isnan(t) ? if_on_plane : t;
   }
 
+  // The crossings of the planes `step[0..2]` of the three axes into t[0..2] (t[3] = 0): the same
+  // numbers as `at`, the affine form four lanes at once.
+  void at3(const float* step, float if_on_plane, float* t) const {
+    if (m_affine) {
+      (simd::Float4::load(step) * simd::Float4::load(m_k) + simd::Float4::load(m_b)).store(t);
+      return;
+    }
+    for (int i = 0; i < 3; ++i) t[i] = at(i, step[i], if_on_plane);
+    t[3] = 0.f;
+  }
+
  private:
   const OctreeTree& m_tree;
   Vec3 m_origin, m_inv;
-  float m_k[3], m_b[3];
+  alignas(16) float m_k[4] = {0.f, 0.f, 0.f, 0.f};  // lane 3 stays 0, so at3's lane 3 is 0
+  alignas(16) float m_b[4] = {0.f, 0.f, 0.f, 0.f};
   bool m_affine = true;
 };
+
+// Per child c, lane i: 1 where bit i of c is set (lane 3: 0). A child's lattice corner is its
+// parent's plus these times half the parent's edge.
+constexpr float kChildBits[8][4] = {{0, 0, 0, 0}, {1, 0, 0, 0}, {0, 1, 0, 0}, {1, 1, 0, 0},
+                                    {0, 0, 1, 0}, {1, 0, 1, 0}, {0, 1, 1, 0}, {1, 1, 1, 0}};
+// Per child c, lane i: +inf where bit i of c is set, else 0. min(tm + this, t1) picks, per axis,
+// t1 where the child is in the upper half and tm where it is in the lower one, as
+// `bit ? t1 : tm` does: tm <= t1 always (crossings are monotonic in the plane), tm + inf is inf
+// or, for tm = -inf, NaN, and min returns its second operand on NaN.
+constexpr float kChildInf[8][4] = {{0, 0, 0, 0},    {kInf, 0, 0, 0},    {0, kInf, 0, 0},    {kInf, kInf, 0, 0},
+                                   {0, 0, kInf, 0}, {kInf, 0, kInf, 0}, {0, kInf, kInf, 0}, {kInf, kInf, kInf, 0}};
+
+// The exit planes of child c of frame `f`: per axis t1 where c is in the upper half, else tm.
+inline simd::Float4 child_far(const float* tm, const float* t1, int c) {
+  return min(simd::Float4::load(tm) + simd::Float4::load(kChildInf[c]), simd::Float4::load(t1));
+}
 
 // Completes frame `g` for interior node `node` of edge `size` (its far crossings and lattice
 // corner are set): the middle crossings, and the child holding the ray at t_cur. Which children
@@ -106,8 +137,10 @@ class LatticeCrossings {
 inline void open_frame(Frame& g, const OctreeNode& node, float size, const LatticeCrossings& crossing, float t_cur) {
   g.first_child = node.first;
   g.half = 0.5f * size;
-  for (int i = 0; i < 3; ++i) g.tm[i] = crossing.at(i, g.lo[i] + g.half, kInf);
-  g.child = (g.tm[0] <= t_cur ? 1 : 0) | (g.tm[1] <= t_cur ? 2 : 0) | (g.tm[2] <= t_cur ? 4 : 0);
+  alignas(16) float mid[4];
+  (simd::Float4::load(g.lo) + simd::Float4::broadcast(g.half)).store(mid);
+  crossing.at3(mid, kInf, g.tm);
+  g.child = less_equal_mask(simd::Float4::load(g.tm), simd::Float4::broadcast(t_cur)) & 7;
 }
 
 // kMirrored[octant][mask]: `mask` with bit c moved to bit c ^ octant, the mirrored numbering of a
@@ -148,6 +181,7 @@ inline float enter_root(Frame& root, const LatticeCrossings& crossing, int octan
     root.t1[i] = crossing.at(i, mirrored ? 0.f : kRootLatticeSteps, kInf);
     root.lo[i] = 0.f;
   }
+  root.t1[3] = root.lo[3] = 0.f;  // the unused lane
   return t_enter;
 }
 
@@ -281,10 +315,9 @@ bool Octree::walk(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) c
       if constexpr (kCount) ++counters.nodes_visited;
       if (!node.is_leaf()) {
         Frame& g = f[1];
-        for (int i = 0; i < 3; ++i) {
-          g.t1[i] = ((f->child >> i) & 1) ? f->t1[i] : f->tm[i];
-          g.lo[i] = f->lo[i] + (((actual >> i) & 1) ? f->half : 0.f);
-        }
+        child_far(f->tm, f->t1, f->child).store(g.t1);
+        (simd::Float4::load(f->lo) + simd::Float4::load(kChildBits[actual]) * simd::Float4::broadcast(f->half))
+            .store(g.lo);
         open_frame(g, node, f->half, crossing, t_cur);
         test_children(m_tree.child_boxes(node), g);
         if (g.enter != 0) {
@@ -311,17 +344,17 @@ bool Octree::walk(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) c
         --f;
         continue;
       }
-      const float ex = (c & 1) ? f->t1[0] : f->tm[0];
-      const float ey = (c & 2) ? f->t1[1] : f->tm[1];
-      const float ez = (c & 4) ? f->t1[2] : f->tm[2];
-      const float t_exit = min3(ex, ey, ez);
+      alignas(16) float exits[4];
+      const simd::Float4 exit4 = child_far(f->tm, f->t1, c);
+      exit4.store(exits);
+      const float t_exit = min3(exits[0], exits[1], exits[2]);
       // Cells beyond the closest hit cannot hold a closer one; an exit at infinity means the ray
       // never leaves (a zero direction).
       if (!(t_exit <= visit_limit(tmax)) || t_exit == kInf) {
         return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
       }
       // Every axis that reaches the exit at once (a ray through an edge or a corner).
-      const int crossed = (ex == t_exit ? 1 : 0) | (ey == t_exit ? 2 : 0) | (ez == t_exit ? 4 : 0);
+      const int crossed = equal_mask(exit4, simd::Float4::broadcast(t_exit)) & 7;
       if ((crossed & c) == 0) {
         f->child = c | crossed;
         t_cur = t_exit;
