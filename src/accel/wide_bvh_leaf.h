@@ -1,6 +1,7 @@
 #pragma once
 // The leaf test and the box test of the wide BVH (internal to src/accel), shared by the
-// single-ray and the packet traversals so that both compute exactly the same numbers.
+// single-ray and the packet traversals so that both compute exactly the same numbers. The
+// octree tests its nodes' child boxes with the same box test.
 
 #include <bit>
 #include <cmath>
@@ -130,8 +131,11 @@ struct WideBoxRay {
   }
 
   /// Bit mask of the children of `node` that the ray enters within [tmin, tmax] (the exit
-  /// widened by kSlabWiden), and their entry distances in `t_enter`.
-  unsigned test(const WideBvhNode<W>& node, float tmin, float tmax, float* t_enter) const {
+  /// widened by kSlabWiden), and their entry distances in `t_enter`. `Node` is a WideBvhNode<W>
+  /// or another node whose boxes lie as its do (the octree's OctreeChildBoxes for W = 8).
+  template <class Node>
+  unsigned test(const Node& node, float tmin, float tmax, float* t_enter) const {
+    static_assert(same_box_layout<Node>(), "the boxes must lie as in WideBvhNode<W>");
     const F tx0 = (plane(node, near_x) - ox) * ix;
     const F tx1 = (plane(node, far_x) - ox) * ix;
     const F ty0 = (plane(node, near_y) - oy) * iy;
@@ -150,13 +154,21 @@ struct WideBoxRay {
   /// Bit mask of the slots of `node` that hold a child. The slab test alone does not exclude an
   /// empty slot (+inf to -inf) for every ray: with an infinite direction component every slab
   /// distance is NaN, which the test drops.
-  static unsigned occupied_slots(const WideBvhNode<W>& node) {
+  template <class Node>
+  static unsigned occupied_slots(const Node& node) {
     return static_cast<unsigned>(less_equal_mask(F::load(node.lo[0]), F::load(node.hi[0])));
   }
 
  private:
+  // Whether `Node` keeps lo[3][W] and hi[3][W] at WideBvhNode<W>'s offsets (`plane` reads them so).
+  template <class Node>
+  static constexpr bool same_box_layout() {
+    return offsetof(Node, lo) == offsetof(WideBvhNode<W>, lo) && offsetof(Node, hi) == offsetof(WideBvhNode<W>, hi) &&
+           sizeof(Node::lo) == sizeof(WideBvhNode<W>::lo) && sizeof(Node::hi) == sizeof(WideBvhNode<W>::hi);
+  }
   // The W floats at byte `offset` of `node`: one plane of the children's boxes.
-  static F plane(const WideBvhNode<W>& node, std::uint32_t offset) {
+  template <class Node>
+  static F plane(const Node& node, std::uint32_t offset) {
     return F::load(reinterpret_cast<const float*>(reinterpret_cast<const unsigned char*>(&node) + offset));
   }
   // The offsets of axis `axis`'s near and far planes for a direction component of sign `negative`.

@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -171,6 +172,8 @@ void for_each_node(const OctreeTree& tree, const std::function<void(std::uint32_
 
 Box3 enlarged(const Box3& b, float margin) { return {b.lo - Vec3(margin), b.hi + Vec3(margin)}; }
 
+Box3 clipped(const Box3& b, const Box3& to) { return {max(b.lo, to.lo), min(b.hi, to.hi)}; }
+
 bool boxes_overlap(const Box3& a, const Box3& b) {
   return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y && a.lo.z <= b.hi.z &&
          b.lo.z <= a.hi.z;
@@ -203,8 +206,10 @@ void check_tree(const Geometry& g, const OctreeTree& tree, const OctreeConfig& c
   const Box3 root = tree.cell_box(std::array<std::uint32_t, 3>{0, 0, 0}.data(), 0);
   EXPECT_TRUE(root.contains(tree.bounds.lo - Vec3(tree.margin)) && root.contains(tree.bounds.hi + Vec3(tree.margin)))
       << "the root cell must hold the primitives with the margin to spare";
+  // One edge length for every axis; the corners, root_lo + root_size, round separately per axis.
   const Vec3 e = root.extent();
-  EXPECT_TRUE(e.x == e.y && e.y == e.z) << "the root cell is a cube";
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(e[a], tree.root_size, 4e-7f * tree.root_size) << "the root cell is a cube";
+  EXPECT_GE(tree.root_size, max_component(tree.bounds.extent())) << "the root cell holds the bounds";
   for_each_node(tree, [&](std::uint32_t index, int depth, const std::uint32_t* lo) {
     ++seen[index];
     const OctreeNode& node = tree.nodes[index];
@@ -221,17 +226,26 @@ void check_tree(const Geometry& g, const OctreeTree& tree, const OctreeConfig& c
     EXPECT_TRUE(std::is_sorted(r, r + node.count) && std::adjacent_find(r, r + node.count) == r + node.count)
         << "references in ascending order, each once";
     if (depth < c.max_depth && node.count > static_cast<std::uint32_t>(c.max_items)) {
-      // Only the gain rule may leave such a leaf: its octants would hold >= ratio x its references.
+      // Only the split rule may leave such a leaf: recompute what its children would hold, from
+      // the exact overlap test, and ask the rule.
       const std::uint32_t half = kOctreeLatticeSteps >> (depth + 1);
-      std::size_t total = 0;
+      std::array<std::size_t, 8> counts{};
+      std::array<Box3, 8> contents;
       for (std::uint32_t o = 0; o < 8; ++o) {
         const std::uint32_t child_lo[3] = {lo[0] + (o & 1 ? half : 0), lo[1] + (o & 2 ? half : 0),
                                            lo[2] + (o & 4 ? half : 0)};
         const Box3 octant = enlarged(tree.cell_box(child_lo, depth + 1), tree.margin);
-        for (std::uint32_t k = 0; k < node.count; ++k) total += overlaps_box(g, tree.ids[r[k]], octant) ? 1 : 0;
+        for (std::uint32_t k = 0; k < node.count; ++k) {
+          if (!overlaps_box(g, tree.ids[r[k]], octant)) continue;
+          ++counts[o];
+          contents[o].extend(clipped(g.bounds(tree.ids[r[k]]), octant));
+        }
       }
-      EXPECT_GE(total, std::size_t{kOctreeSplitGainRatio} * node.count)
-          << "leaf " << index << " at depth " << depth << " holds " << node.count << " > K without the gain rule";
+      const Box3 cell = enlarged(tree.cell_box(lo, depth), tree.margin);
+      Box3 content;
+      for (std::uint32_t k = 0; k < node.count; ++k) content.extend(clipped(g.bounds(tree.ids[r[k]]), cell));
+      EXPECT_FALSE(octree_split_pays(node.count, content, counts, contents))
+          << "leaf " << index << " at depth " << depth << " holds " << node.count << " > K, and a split would pay";
     }
   });
   // Every primitive that really touches a leaf's cell is referenced there (the margin only adds).
@@ -308,6 +322,55 @@ TEST(OctreeTree, AllPrimitivesInOneCell) {
       rays.push_back({o, 0.f, point + s.unit() * 1e-6f - o});
     }
     check(g, octree, make_reference(g, rays, s), name_of(c));
+  }
+}
+
+// Every interior node's child boxes: an empty child has the empty box; any other child's box lies
+// in its enlarged cell and holds every primitive of its subtree's leaves, clipped to that cell, so
+// a ray that can hit one of them in the child's cell enters the box.
+TEST(OctreeTree, ChildBoxesHoldWhatTheChildrenHold) {
+  for (int scene : {0, 4, 5}) {
+    Sampler s(kScenes[scene].seed);
+    const Geometry g = kScenes[scene].make(s);
+    for (const OctreeConfig& c : {OctreeConfig{}, config(1, 8)}) {
+      SCOPED_TRACE(std::string(kScenes[scene].name) + " " + name_of(c));
+      const OctreeTree tree = build_octree(g, c);
+      std::size_t interior = 0;
+      int failures = 0;
+      for_each_node(tree, [&](std::uint32_t index, int depth, const std::uint32_t* lo) {
+        const OctreeNode& node = tree.nodes[index];
+        if (node.is_leaf()) return;
+        ++interior;
+        const OctreeChildBoxes& boxes = tree.child_boxes(node);
+        const std::uint32_t half = kOctreeLatticeSteps >> (depth + 1);
+        for (std::uint32_t o = 0; o < 8; ++o) {
+          const Box3 box{{boxes.lo[0][o], boxes.lo[1][o], boxes.lo[2][o]},
+                         {boxes.hi[0][o], boxes.hi[1][o], boxes.hi[2][o]}};
+          const OctreeNode& child = tree.nodes[node.first + o];
+          if (child.is_leaf() && child.count == 0) {
+            EXPECT_TRUE(box.empty()) << "an empty child has the empty box";
+            continue;
+          }
+          const std::uint32_t child_lo[3] = {lo[0] + (o & 1 ? half : 0), lo[1] + (o & 2 ? half : 0),
+                                             lo[2] + (o & 4 ? half : 0)};
+          const Box3 cell = enlarged(tree.cell_box(child_lo, depth + 1), tree.margin);
+          EXPECT_TRUE(cell.contains(box.lo) && cell.contains(box.hi)) << "a content box lies in its cell";
+          for_each_leaf_in(tree, cell, [&](std::uint32_t leaf, const Box3& leaf_cell) {
+            const Box3 own = tree.cell_box(child_lo, depth + 1);
+            if (!own.contains(leaf_cell.lo) || !own.contains(leaf_cell.hi)) return;  // a neighbour's leaf
+            const OctreeNode& l = tree.nodes[leaf];
+            for (std::uint32_t k = 0; k < l.count; ++k) {
+              const Box3 part = clipped(g.bounds(tree.ids[tree.refs[l.first + k]]), cell);
+              if (part.empty() || (box.contains(part.lo) && box.contains(part.hi))) continue;
+              if (++failures <= 5)
+                ADD_FAILURE() << "a primitive of child " << o << " of node " << index << " sticks out";
+            }
+          });
+        }
+      });
+      EXPECT_EQ(interior, tree.boxes.size()) << "one entry of child boxes per interior node";
+      EXPECT_EQ(failures, 0);
+    }
   }
 }
 
@@ -669,6 +732,69 @@ TEST(Octree, ParallelQueriesAgreeWithSequentialOnes) {
   }
 }
 
+// cells_on_ray is the query's own walk: without mailboxes a closest-hit query tests every
+// reference of every leaf it enters, so the leaves listed as tested, looked up in the tree, hold
+// exactly the primitive tests the counted query reports; each listed cell is a cell of the tree,
+// and they come in order along the ray.
+TEST(Octree, CellsOnRayAreTheLeavesTheQueryTests) {
+  Sampler s(22);
+  const Geometry g = spheres_and_triangles(s);
+  const Octree octree(g, config(4, 10, false));
+  const OctreeTree& tree = octree.tree();
+  // Every cell of the tree by its box: the leaves with their reference counts, interior nodes -1.
+  std::map<std::array<float, 6>, long> cells;
+  auto key = [](const Box3& b) { return std::array<float, 6>{b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z}; };
+  for_each_node(tree, [&](std::uint32_t index, int depth, const std::uint32_t* lo) {
+    const OctreeNode& node = tree.nodes[index];
+    cells[key(tree.cell_box(lo, depth))] = node.is_leaf() ? long(node.count) : -1;
+  });
+  std::vector<Ray> rays = random_rays(g, s, 1500);
+  for (const Vec3& c : interior_centres(tree)) rays.push_back({c, 0.f, s.unit()});  // from cell corners
+  std::size_t tested_somewhere = 0;
+  int failures = 0;
+  for (const Ray& ray : rays) {
+    const auto [rc, hc, fc, st] = counted_hit(octree, ray);
+    const std::vector<WalkedCell> walked = octree.cells_on_ray(ray);
+    std::uint64_t refs = 0, leaves = 0;
+    float last_entry = -kInf;
+    bool ordered = true, known = true;
+    for (const WalkedCell& cell : walked) {
+      const auto it = cells.find(key(cell.box));
+      if (it == cells.end()) {
+        known = false;
+        continue;
+      }
+      if (cell.has_primitives) {
+        known = known && it->second > 0;
+        refs += std::uint64_t(std::max(it->second, 0L));
+        ++leaves;
+      }
+      // Where the ray enters the cell (the cells share faces, so with rounding to spare).
+      float t0 = ray.tmin, t1 = ray.tmax;
+      for (int a = 0; a < 3; ++a) {
+        const float inv = 1.f / ray.direction[a];
+        float n = (cell.box.lo[a] - ray.origin[a]) * inv, f = (cell.box.hi[a] - ray.origin[a]) * inv;
+        if (n > f) std::swap(n, f);
+        if (n == n) t0 = std::max(t0, n);
+        if (f == f) t1 = std::min(t1, f);
+      }
+      ordered = ordered && t0 >= last_entry - 1e-4f * std::max(1.f, std::fabs(last_entry));
+      last_entry = std::max(last_entry, t0);
+    }
+    tested_somewhere += leaves > 0 ? 1 : 0;
+    if ((!known || !ordered || refs != st.prim_tests || leaves > st.nodes_visited) && ++failures <= 5) {
+      ADD_FAILURE() << describe(ray) << ": " << walked.size() << " cells, " << leaves << " tested holding " << refs
+                    << " references; the query tested " << st.prim_tests << (known ? "" : "; a cell not in the tree")
+                    << (ordered ? "" : "; out of order");
+    }
+  }
+  EXPECT_EQ(failures, 0);
+  EXPECT_GT(tested_somewhere, rays.size() / 4) << "most rays should test some leaf";
+  // A ray that misses the scene walks nothing.
+  const Box3 b = g.bounds();
+  EXPECT_TRUE(octree.cells_on_ray({b.hi + b.extent(), 0.f, {1.f, 1.f, 1.f}}).empty());
+}
+
 TEST(Octree, InfoDescribesTheTree) {
   Sampler s(21);
   const Geometry g = spheres_and_triangles(s);
@@ -677,11 +803,13 @@ TEST(Octree, InfoDescribesTheTree) {
   EXPECT_EQ(info.name, "octree");
   EXPECT_EQ(info.primitive_count, g.size());
   EXPECT_EQ(info.node_count, octree.tree().nodes.size());
+  EXPECT_EQ(octree.tree().boxes.size() * 8 + 1, octree.tree().nodes.size()) << "child boxes for every interior node";
   EXPECT_EQ(info.leaf_count, octree.tree().leaf_count);
   EXPECT_EQ(info.max_depth, octree.tree().max_depth);
   EXPECT_GT(info.max_depth, 0);
   // Nodes, references and ids at least; a thread's mailboxes (4 bytes a primitive) too.
   EXPECT_GE(info.memory_bytes, info.node_count * sizeof(OctreeNode) +
+                                   octree.tree().boxes.size() * sizeof(OctreeChildBoxes) +
                                    (octree.tree().refs.size() + 2 * std::size_t{g.size()}) * sizeof(std::uint32_t));
   EXPECT_GE(info.build_seconds, 0.0);
 }

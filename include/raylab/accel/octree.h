@@ -1,15 +1,19 @@
 #pragma once
 /// \file
 /// Octree over a cubic root cell, walked in ray order with the parametric top-down traversal of
-/// Revelles, Urena & Lastra (2000). The builder (octree_build.cpp) is separate from the
-/// traversal (octree.cpp).
+/// Revelles, Urena & Lastra (2000). Each interior node also keeps the boxes of what its eight
+/// children hold, so a ray skips a child whose content it misses (an empty child, or the part of
+/// a cell that a primitive leaves empty) without entering it. The builder (octree_build.cpp) is
+/// separate from the traversal (octree.cpp).
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
 
+#include "raylab/accel/cell_walk.h"
 #include "raylab/accel/traversal_accelerator.h"
 #include "raylab/geometry/geometry.h"
 
@@ -36,14 +40,14 @@ inline constexpr int kOctreeDepthLimit = 24;
 /// Lattice steps per axis across the root cell.
 inline constexpr std::uint32_t kOctreeLatticeSteps = 1u << kOctreeDepthLimit;
 
-/// A split is kept only when the children together hold fewer than this many times the parent's
-/// references. A child cube has a quarter of its parent's surface area, so a ray through the
-/// parent enters a given child with probability about 1/4, and the split is expected to leave a
-/// ray (children's references) / 4 tests instead of the parent's n: with fewer than 3n references
-/// in all, at most 3/4 of them, a saving that pays for the extra cells the ray visits. Without
-/// the rule, primitives that cannot be separated (coincident planes, many triangles through one
-/// point, cells smaller than the triangles in them) would be split down to depth L.
-inline constexpr int kOctreeSplitGainRatio = 3;
+/// The cost of entering one more node (a frame and an 8-wide box test), in primitive tests: the
+/// split rule's price of a level. A cell of n references is split when the children are expected
+/// to cost a ray less: kOctreeTraversalCost + sum over children of n_c * area(content_c) /
+/// area(content) < n, the surface-area heuristic with the content boxes (a ray that enters the
+/// parent's content box enters a child's with probability about the ratio of their areas).
+/// Primitives that cannot be separated (many triangles through one point, coincident planes)
+/// leave every child's content about as large as the parent's share and stop the splitting.
+inline constexpr double kOctreeTraversalCost = 1.0;
 
 /// One node, 8 bytes. The eight children of an interior node are stored consecutively, child
 /// `c` at `first + c`, where bit 0 of `c` selects the upper half in x, bit 1 in y, bit 2 in z.
@@ -58,9 +62,23 @@ struct OctreeNode {
 };
 static_assert(sizeof(OctreeNode) == 8, "OctreeNode must stay 8 bytes");
 
+/// The content boxes of an interior node's eight children, as a structure of arrays that one
+/// 8-wide slab test reads (the wide BVH's, WideBoxRay): child c's box is lo[axis][c] to
+/// hi[axis][c]. A child's content box is the union, over the primitives in its subtree, of each
+/// primitive's bounds clipped to the child's cell enlarged by the margin: a ray that reaches a
+/// hit in the child's cell passes through it. An empty child has the empty box (+inf to -inf).
+/// 192 bytes, three cache lines.
+struct alignas(64) OctreeChildBoxes {
+  float lo[3][8];  ///< low corners, by axis then child
+  float hi[3][8];  ///< high corners, by axis then child
+};
+
 /// The octree as plain data, produced by `build_octree` and walked by the `Octree` accelerator.
 struct OctreeTree {
-  std::vector<OctreeNode> nodes;    ///< root at index 0; empty when there are no primitives
+  std::vector<OctreeNode> nodes;  ///< root at index 0; empty when there are no primitives
+  /// One entry per interior node: the boxes of its children, the node whose child 0 is at
+  /// index `first` owning entry (first - 1) / 8 (children come in groups of eight after the root).
+  std::vector<OctreeChildBoxes> boxes;
   std::vector<std::uint32_t> refs;  ///< leaf references, leaf by leaf: positions in `ids`
   std::vector<std::uint32_t> ids;   ///< the primitives (or groups) indexed, in the order given
   Box3 bounds;                      ///< exact bounds of the primitives
@@ -81,6 +99,9 @@ struct OctreeTree {
     return root_lo[axis] + static_cast<float>(step) * (root_size * 0x1p-24f);
   }
 
+  /// The content boxes of the children of interior node `node`.
+  const OctreeChildBoxes& child_boxes(const OctreeNode& node) const { return boxes[(node.first - 1) >> 3]; }
+
   /// The box of the cell at depth `depth` whose low corner is lattice point `lo`.
   Box3 cell_box(const std::uint32_t lo[3], int depth) const {
     const std::uint32_t size = kOctreeLatticeSteps >> depth;
@@ -89,12 +110,19 @@ struct OctreeTree {
   }
 };
 
+/// The split rule: whether a cell of `n` references whose content box is `content` is split, given
+/// the references `counts` and content boxes `contents` its eight children would get (see
+/// kOctreeTraversalCost). A split that leaves every reference in one child is made only for 16
+/// references or more: a small object in a large empty cell, not primitives meeting in a point.
+bool octree_split_pays(std::size_t n, const Box3& content, const std::array<std::size_t, 8>& counts,
+                       const std::array<Box3, 8>& contents);
+
 /// Builds an octree over every primitive of `geometry`.
 OctreeTree build_octree(const Geometry& geometry, const OctreeConfig& config = {});
 
 /// Builds an octree over the primitives (or groups) `ids` of `geometry` only. A cell holding more
 /// than K primitives, above depth L, is split into eight octants at its centre unless the split
-/// would not pay (kOctreeSplitGainRatio); a primitive goes into every octant that it overlaps
+/// would not pay (kOctreeTraversalCost); a primitive goes into every octant that it overlaps
 /// exactly (overlaps_box) once the octant is enlarged by `margin`. Subtrees build in parallel.
 OctreeTree build_octree(const Geometry& geometry, std::span<const std::uint32_t> ids, const OctreeConfig& config = {});
 
@@ -102,8 +130,9 @@ OctreeTree build_octree(const Geometry& geometry, std::span<const std::uint32_t>
 class Mailboxes;
 
 /// The octree accelerator. Each ray visits the leaves it crosses in order along the ray
-/// (Revelles et al. 2000) and stops at the first leaf whose exit lies beyond the closest hit.
-class Octree final : public TraversalAccelerator<Octree> {
+/// (Revelles et al. 2000), skipping the children whose content boxes it misses, and stops at
+/// the first leaf whose exit lies beyond the closest hit.
+class Octree final : public TraversalAccelerator<Octree>, public CellWalk {
  public:
   /// Builds the octree over every primitive of `geometry`, which must outlive this object.
   explicit Octree(const Geometry& geometry, const OctreeConfig& config = {});
@@ -112,8 +141,15 @@ class Octree final : public TraversalAccelerator<Octree> {
   ~Octree() override;
 
   Box3 bounds() const override { return m_tree.bounds; }
-  /// Name "octree"; memory counts nodes, references, ids and one thread's mailboxes.
+  /// Name "octree"; memory counts nodes, child boxes, references, ids and one thread's mailboxes.
   AccelInfo info() const override;
+
+  /// The cells a closest-hit query for `ray` steps into, in order, from the query's own walk:
+  /// each leaf whose primitives it tests (has_primitives), and each leaf or whole subtree it
+  /// passes over because the ray misses its content box (empty cells included). Once no child
+  /// of a node that the ray enters lies ahead, the walk leaves the node at once: the cells
+  /// after that one are not stepped into, so they are not listed.
+  std::vector<WalkedCell> cells_on_ray(const Ray& ray) const override;
 
   /// The tree, for tests and tools.
   const OctreeTree& tree() const { return m_tree; }
@@ -125,6 +161,10 @@ class Octree final : public TraversalAccelerator<Octree> {
   // The kernel of every query (TraversalAccelerator).
   template <bool kAnyHit, bool kCount>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
+  // The walk behind traverse and cells_on_ray: `on_cell(box, tested)` hears of every cell the ray
+  // steps through (a no-op for queries).
+  template <bool kAnyHit, bool kCount, class OnCell>
+  bool walk(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) const;
 
   const Geometry& m_geometry;
   OctreeConfig m_config;
