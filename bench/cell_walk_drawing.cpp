@@ -32,7 +32,7 @@ constexpr double kMargin = 12.0;
 constexpr double kTitle = 34.0;
 
 // 400 small spheres packed into the corner square [70, 95]^2, and 12 larger ones scattered over
-// the rest: the cluster is what makes a uniform grid either too coarse there or too fine
+// two strips of the rest: the cluster is what makes a uniform grid either too coarse there or too fine
 // everywhere else.
 Geometry flat_scene() {
   Geometry g;
@@ -41,8 +41,11 @@ Geometry flat_scene() {
     const float x = 70.f + 25.f * s.next_float(), y = 70.f + 25.f * s.next_float();
     g.add(Sphere{{x, y, 0.f}, 0.25f + 0.35f * s.next_float()}, 0);
   }
+  // Away from the drawn ray, so that it crosses the empty middle and ends in the cluster.
   for (int i = 0; i < 12; ++i) {
-    const float x = 5.f + 55.f * s.next_float(), y = 5.f + 55.f * s.next_float();
+    const bool low = i % 2 == 0;
+    const float x = 5.f + (low ? 55.f : 35.f) * s.next_float();
+    const float y = low ? 5.f + 25.f * s.next_float() : 80.f + 15.f * s.next_float();
     g.add(Sphere{{x, y, 0.f}, 1.5f + 2.5f * s.next_float()}, 0);
   }
   return g;
@@ -72,9 +75,10 @@ std::string draw(const Geometry& g, const Ray& ray, const std::vector<Panel>& pa
     svg += fmt::format("<text x=\"{:.1f}\" y=\"16\" font-weight=\"bold\">--accel {}</text>\n", sx(0, i), panel.name);
     svg += fmt::format("<text x=\"{:.1f}\" y=\"30\">{} cells visited, {} primitive tests</text>\n", sx(0, i),
                        panel.cells.size(), panel.prim_tests);
-    svg += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" "
-                       "stroke=\"#999\"/>\n",
-                       sx(0, i), sy(kSide), kPanel, kPanel);
+    svg += fmt::format(
+        "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" "
+        "stroke=\"#999\"/>\n",
+        sx(0, i), sy(kSide), kPanel, kPanel);
     // The cells first, so the spheres and the ray are drawn over them.
     for (const WalkedCell& c : panel.cells) {
       const double x0 = sx(std::max(c.box.lo.x, 0.f), i), x1 = sx(std::min(c.box.hi.x, kSide), i);
@@ -91,16 +95,17 @@ std::string draw(const Geometry& g, const Ray& ray, const std::vector<Panel>& pa
     }
     const float t_end = panel.hit ? panel.hit_t : 2.f * kSide;
     const Vec3 a = ray.origin, b = ray.at(t_end);
-    svg += fmt::format("<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#d62728\" "
-                       "stroke-width=\"1.6\"/>\n",
-                       sx(a.x, i), sy(a.y), sx(b.x, i), sy(b.y));
+    svg += fmt::format(
+        "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#d62728\" "
+        "stroke-width=\"1.6\"/>\n",
+        sx(a.x, i), sy(a.y), sx(b.x, i), sy(b.y));
     if (panel.hit) {
       svg += fmt::format("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"3\" fill=\"#d62728\"/>\n", sx(b.x, i), sy(b.y));
     }
   }
   svg += fmt::format(
-      "<text x=\"{:.1f}\" y=\"{:.1f}\" fill=\"#555\">slice z = {} through {} spheres centred at z = 0; cells the "
-      "ray's closest-hit query visits, shaded where it tested primitives</text>\n",
+      "<text x=\"{:.1f}\" y=\"{:.1f}\" fill=\"#555\">Slice z = {} of {} spheres centred at z = 0. Boxes: the "
+      "cells one closest-hit query visits (orange: primitives tested there).</text>\n",
       kMargin, height - 6.0, kZ0, g.spheres.size());
   svg += "</svg>\n";
   return svg;
@@ -118,8 +123,8 @@ int main(int argc, char** argv) {
     for (int i = 2; i < argc; ++i) names.emplace_back(argv[i]);
     if (names.empty()) names = {"grid", "grid2", "irregular", "octree"};
     const Geometry g = flat_scene();
-    // From the left edge, low, rising gently into the cluster across the empty middle.
-    const Vec3 origin{0.5f, 8.f, kZ0};
+    // From the left edge, rising gently into the cluster across the empty middle.
+    const Vec3 origin{0.5f, 45.f, kZ0};
     const Vec3 target{82.f, 84.f, kZ0};
     const Ray ray{origin, 0.f, normalize(target - origin)};
     std::vector<Panel> panels;
