@@ -11,7 +11,35 @@
 #include <cstddef>
 #include <limits>
 
+#include "raylab/core/box.h"
+#include "raylab/core/ray.h"
+#include "traversal_common.h"
+
 namespace raylab {
+
+/// Clips the range [t_in, t_out] of a ray from `o` with reciprocal direction `inv_d` to `box`;
+/// true when something is left. The far distance is widened as in the BVH, so that a ray
+/// grazing the box where a primitive lies in its face still enters.
+inline bool clip_to_box(const Vec3& o, const Vec3& inv_d, const Box3& box, float& t_in, float t_out) {
+  for (int a = 0; a < 3; ++a) {
+    float t0 = (box.lo[a] - o[a]) * inv_d[a];
+    float t1 = (box.hi[a] - o[a]) * inv_d[a];
+    if (inv_d[a] < 0.f) std::swap(t0, t1);
+    t_in = t0 > t_in ? t0 : t_in;  // a NaN slab (0 * inf: origin in a face plane) is ignored
+    t_out = t1 < t_out ? t1 : t_out;
+  }
+  return t_in <= t_out * kSlabWiden;
+}
+
+/// Clips `ray` to a grid's box: on return true, `t_in` is where the ray's range [tmin, tmax]
+/// enters the box. An infinite or NaN origin, which would make the boundary distances NaN, hits
+/// nothing.
+inline bool clip_ray_to_grid(const Ray& ray, const Box3& box, const Vec3& inv_d, float& t_in) {
+  const Vec3 o = ray.origin;
+  if (!std::isfinite(o.x + o.y + o.z)) return false;
+  t_in = ray.tmin;
+  return clip_to_box(o, inv_d, box, t_in, ray.tmax);
+}
 
 /// The cell along one axis that holds the offset f = (x - lo) * cells_per_unit, clamped to
 /// [0, n - 1]; NaN (a flat axis, or a NaN coordinate) gives 0.

@@ -40,20 +40,9 @@ bool UniformGrid::run(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cel
 bool UniformGrid::clip_and_enter(const Ray& ray, GridWalk& w) const {
   if (m_refs.empty()) return false;
   const Vec3 o = ray.origin, d = ray.direction;
-  // An infinite or NaN origin would make the boundary distances NaN; such a ray hits nothing.
-  if (!std::isfinite(o.x + o.y + o.z)) return false;
-  // Clip to the grid box. The far distance is widened as in the BVH, so that a ray grazing the
-  // box where a primitive lies in its face still enters.
   const Vec3 inv_d = safe_reciprocal(d);
-  float t_in = ray.tmin, t_out = ray.tmax;
-  for (int a = 0; a < 3; ++a) {
-    float t0 = (m_bounds.lo[a] - o[a]) * inv_d[a];
-    float t1 = (m_bounds.hi[a] - o[a]) * inv_d[a];
-    if (inv_d[a] < 0.f) std::swap(t0, t1);
-    t_in = t0 > t_in ? t0 : t_in;  // a NaN slab (0 * inf: origin in a face plane) is ignored
-    t_out = t1 < t_out ? t1 : t_out;
-  }
-  if (!(t_in <= t_out * kSlabWiden)) return false;
+  float t_in;
+  if (!clip_ray_to_grid(ray, m_bounds, inv_d, t_in)) return false;
 
   // The entry cell, from the entry point (clamped: rounding may put it just outside).
   const Vec3 entry = ray.at(t_in);
