@@ -195,16 +195,24 @@ void TwoLevelGrid::build() {
   if (slots >= kMax32) throw UsageError("two-level grid: too many leaf cells (lower --grid2-leaf-density)");
 
   // Pass 2: a (list or leaf cell, primitive id) pair for every leaf cell each small (top cell,
-  // primitive) pair overlaps, and one for the list of each big one. Keyed by the global id, so
-  // that each cell lists its primitives in id order as brute force meets them (the uniform
-  // grid's rule for any-hit queries).
+  // primitive) pair overlaps, and one for the list of each big one. Keyed by the rank of the
+  // global id, so that each cell lists its primitives in id order as brute force meets them
+  // (the uniform grid's rule for any-hit queries).
+  // The rank of each slot's id among all ids (ids themselves may be sparse: a two-level
+  // structure's groups have ids from kGroupIdBase up), and the slot of each rank.
+  std::vector<std::uint32_t> slot_of_rank(count), rank_of_slot(count);
+  for (std::uint32_t i = 0; i < count; ++i) slot_of_rank[i] = i;
+  tbb::parallel_sort(slot_of_rank.begin(), slot_of_rank.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return m_ids[a] < m_ids[b]; });
+  for (std::uint32_t r = 0; r < count; ++r) rank_of_slot[slot_of_rank[r]] = r;
   const std::vector<std::uint64_t> leaf_pairs =
       sorted_pairs(top_pairs.size(), [&](std::vector<std::uint64_t>& out, std::size_t k) {
         const std::size_t c = top_pairs[k] >> 32;
-        const std::uint32_t id = m_ids[top_pairs[k] & kMax32];
+        const auto slot = static_cast<std::uint32_t>(top_pairs[k] & kMax32);
+        const std::uint32_t id = m_ids[slot], rank = rank_of_slot[slot];
         const TopCell& t = m_top[c];
         if (big[k]) {
-          out.push_back(std::uint64_t(t.list) << 32 | id);
+          out.push_back(std::uint64_t(t.list) << 32 | rank);
           return;
         }
         auto leaf_axis = [&](int a) {
@@ -217,21 +225,17 @@ void TwoLevelGrid::build() {
         for (int a = 0; a < 3; ++a) leaf_margin[a] = grid_margin(t.cell[a], scale);
         const std::size_t rx = t.res[0], rxy = rx * std::size_t(t.res[1]);
         for_each_overlapped_cell(m_geometry, id, m_geometry.bounds(id), axes, leaf_margin, [&](int i, int j, int l) {
-          out.push_back(std::uint64_t(t.list + 1 + i + rx * j + rxy * l) << 32 | id);
+          out.push_back(std::uint64_t(t.list + 1 + i + rx * j + rxy * l) << 32 | rank);
         });
       });
   if (leaf_pairs.size() >= kMax32) throw UsageError("two-level grid: too many primitive references");
 
   // One offset per list and leaf cell; references are slots (positions in m_ids).
-  std::uint32_t max_id = 0;
-  for (std::uint32_t id : m_ids) max_id = std::max(max_id, id);
-  std::vector<std::uint32_t> slot_of(std::size_t(max_id) + 1, 0u);
-  for (std::uint32_t i = 0; i < count; ++i) slot_of[m_ids[i]] = i;
   m_offsets.assign(slots + 1, 0u);
   m_refs.resize(leaf_pairs.size());
   for (std::size_t r = 0; r < leaf_pairs.size(); ++r) {
     ++m_offsets[(leaf_pairs[r] >> 32) + 1];
-    m_refs[r] = slot_of[leaf_pairs[r] & kMax32];
+    m_refs[r] = slot_of_rank[leaf_pairs[r] & kMax32];
   }
   for (std::size_t c = 1; c <= slots; ++c) m_offsets[c] += m_offsets[c - 1];
   m_nonempty_leaf_cells = 0;
