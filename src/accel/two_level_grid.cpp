@@ -62,6 +62,7 @@ bool TwoLevelGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk& top
   const Vec3 inv_d = safe_reciprocal(d);
   const std::uint32_t* const offsets = m_offsets.data();
   const std::uint8_t* const skip = m_top_skip.data();
+  const std::uint8_t* const leaf_skip = m_leaf_skip.data();
   const std::uint32_t* const refs = m_refs.data();
   const TopCell* const cells = m_top.data();
   const SlotPrimitives prims{m_ids.data(),     m_triangles.data(), m_spheres.data(),
@@ -123,11 +124,21 @@ bool TwoLevelGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk& top
           for (;;) {
             if constexpr (kCount) ++counters.nodes_visited;
             const float t_leaf_exit = leaf.exit();
-            on_cell(index, leaf.cell, offsets[leaf.index] != offsets[leaf.index + 1]);
+            // 0: the leaf cell holds primitives; else the distance in cells to one that does.
+            const int leaf_distance = leaf_skip[leaf.index];
+            on_cell(index, leaf.cell, leaf_distance == 0);
+            if (leaf_distance > 1) {
+              // Every leaf cell within leaf_distance - 1 is empty: cross that cube in one jump.
+              float t_leave;
+              const GridWalk::Jump jump = leaf.jump(leaf_distance - 1, tmax, t_leave);
+              if (jump == GridWalk::Jump::kStop) over = true;  // the ray's range ends in it
+              if (jump != GridWalk::Jump::kMoved) break;
+              continue;
+            }
             // The same early exit as in a uniform grid: a hit no farther than this leaf cell's
             // exit is the closest (every primitive is in every leaf cell it touches, or in the
             // list of a top cell already entered).
-            if (test_cell(leaf.index) || tmax <= t_leaf_exit) {
+            if ((leaf_distance == 0 && test_cell(leaf.index)) || tmax <= t_leaf_exit) {
               over = true;
               break;
             }

@@ -248,6 +248,18 @@ void TwoLevelGrid::build() {
   std::vector<std::uint8_t> occupied(cells, 0);
   for (std::size_t c = 0; c < cells; ++c) occupied[c] = first[c] != first[c + 1];
 
+  // Empty-space distances within each leaf grid (lists get 0: the walk never reads them).
+  m_leaf_skip.assign(slots, 0);
+  tbb::parallel_for(std::size_t{0}, cells, [&](std::size_t c) {
+    const TopCell& t = m_top[c];
+    if (t.res[0] == 0) return;
+    const std::size_t begin = t.list + 1;
+    const std::vector<std::uint8_t> d =
+        chessboard_distances(t.res, m_config.skip_empty ? kMaxSkip : 1,
+                             [&](std::size_t l) { return m_offsets[begin + l] != m_offsets[begin + l + 1]; });
+    std::copy(d.begin(), d.end(), m_leaf_skip.begin() + std::ptrdiff_t(begin));
+  });
+
   // Empty-space distances over the top grid (with skipping off, every empty cell gets 1).
   m_top_skip =
       chessboard_distances(res, m_config.skip_empty ? kMaxSkip : 1, [&](std::size_t c) { return occupied[c] != 0; });
@@ -345,7 +357,7 @@ AccelInfo TwoLevelGrid::info() const {
   std::size_t planes = 0;
   for (const auto& p : m_top_planes) planes += p.size();
   info.memory_bytes = sizeof(*this) + (m_offsets.size() + m_refs.size() + m_ids.size()) * sizeof(std::uint32_t) +
-                      planes * sizeof(float) + m_top_skip.size() + m_top.size() * sizeof(TopCell) +
+                      planes * sizeof(float) + m_top_skip.size() + m_leaf_skip.size() + m_top.size() * sizeof(TopCell) +
                       m_triangles.size() * sizeof(Triangle) + m_spheres.size() * sizeof(Sphere);
   info.node_count = m_top.size() + leaf_cell_count();
   info.leaf_count = m_nonempty_leaf_cells;

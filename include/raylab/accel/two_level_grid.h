@@ -23,11 +23,12 @@
 /// Traversal: Cleary & Wyvill's walk on the top grid (shared with the uniform grid); in a top
 /// cell with primitives, the same walk on its leaf grid over the ray's stretch inside the cell,
 /// then back to the top walk. Mailboxes test a primitive once per ray; the walk stops at the
-/// first cell holding a hit no farther than the cell's exit; empty top cells are crossed in
-/// jumps over the empty space around them.
+/// first cell holding a hit no farther than the cell's exit; empty space is crossed in jumps
+/// at both levels (Cohen & Sheffer's proximity clouds, as in the uniform grid).
 ///
 /// Memory: per top cell 1 byte of empty-space distance and a 64-byte record (offset, leaf
-/// resolution, box and cell size); (leaf cells + top lists + 1) * 4 bytes of offsets; 4 bytes per reference; 4
+/// resolution, box and cell size); per leaf cell (and list) 1 byte of empty-space distance;
+/// (leaf cells + top lists + 1) * 4 bytes of offsets; 4 bytes per reference; 4
 /// bytes per primitive of ids, copies of the triangles and spheres in the grid's spatial order,
 /// and the top grid's planes; reported by info(). Mailboxing adds 4 bytes per primitive per
 /// tracing thread.
@@ -56,8 +57,10 @@ struct TwoLevelGridConfig {
   /// Cells per primitive of each leaf grid (`--grid2-leaf-density`): a top cell overlapped by
   /// n primitives gets about leaf_density * n cells; must be > 0.
   float leaf_density = 2.f;
-  bool mailbox = true;     ///< test a primitive spanning several cells once per ray
-  bool skip_empty = true;  ///< cross empty top cells in jumps (off: cell by cell, for comparison)
+  bool mailbox = true;  ///< test a primitive spanning several cells once per ray
+  /// Cross empty space in jumps at both levels: over the empty top cells around an empty top
+  /// cell, and over the empty leaf cells around an empty leaf cell (off: cell by cell).
+  bool skip_empty = true;
 };
 
 /// The two-level grid accelerator ("grid2").
@@ -143,10 +146,11 @@ class TwoLevelGrid final : public TraversalAccelerator<TwoLevelGrid>, public Cel
   std::array<std::vector<float>, 3> m_top_planes;  ///< n_a + 1 top cell boundaries per axis
   std::vector<TopCell> m_top;                      ///< top cells, x fastest
   std::vector<std::uint8_t> m_top_skip;            ///< per top cell: 0 = has a leaf grid, else distance to one
-  std::vector<std::uint32_t> m_offsets;            ///< list or leaf cell c: m_refs[m_offsets[c] .. m_offsets[c + 1])
-  std::vector<std::uint32_t> m_refs;               ///< positions in m_ids, leaf cell by leaf cell
-  std::uint32_t m_triangle_count = 0;              ///< global ids below this are triangles
-  std::uint32_t m_sphere_end = 0;                  ///< global ids in [m_triangle_count, this) are spheres
+  std::vector<std::uint8_t> m_leaf_skip;  ///< per list or leaf cell: 0 = holds references, else distance to one
+  std::vector<std::uint32_t> m_offsets;   ///< list or leaf cell c: m_refs[m_offsets[c] .. m_offsets[c + 1])
+  std::vector<std::uint32_t> m_refs;      ///< positions in m_ids, leaf cell by leaf cell
+  std::uint32_t m_triangle_count = 0;     ///< global ids below this are triangles
+  std::uint32_t m_sphere_end = 0;         ///< global ids in [m_triangle_count, this) are spheres
   std::size_t m_leaf_cells = 0;
   std::size_t m_nonempty_leaf_cells = 0;
   double m_build_seconds = 0.0;
