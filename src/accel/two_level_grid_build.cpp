@@ -39,6 +39,10 @@ constexpr double kTopExponent = 0.6;
 // list instead of its leaf grid.
 constexpr float kBigFraction = 0.5f;
 
+// ...but only when the other primitives' box has at most this fraction of the surface area of
+// the box of all of them.
+constexpr float kListGain = 0.5f;
+
 // Emits pairs in parallel through emit(local vector, item) for items [0, count), then gathers
 // and sorts them.
 template <class Emit>
@@ -150,11 +154,12 @@ void TwoLevelGrid::build() {
     const Box3 cell_box{top_lo(x, y, z), top_hi(x, y, z)};
     const Box3 enlarged{cell_box.lo - margin, cell_box.hi + margin};  // as inserted: never an empty part
     const Vec3 e = cell_box.extent();
-    Box3 small_box;
+    Box3 small_box, all_box;
     std::uint32_t small = 0;
     for (std::uint32_t k = first[c]; k < first[c + 1]; ++k) {
       const Box3 b = m_geometry.bounds(m_ids[top_pairs[k] & kMax32]);
       const Box3 part{max(b.lo, enlarged.lo), min(b.hi, enlarged.hi)};
+      all_box.extend(part);
       int spanned = 0;
       for (int a = 0; a < 3; ++a) spanned += part.hi[a] - part.lo[a] >= kBigFraction * e[a];
       if (spanned >= 2) {
@@ -163,6 +168,15 @@ void TwoLevelGrid::build() {
         small_box.extend(part);
         ++small;
       }
+    }
+    // The list pays only where leaving its primitives out shrinks the leaf grid's box (a ray
+    // meets a box in proportion to its surface area); elsewhere (the big faces of a gear among
+    // its small ones) every primitive stays in the leaf grid, where a ray tests only those near
+    // its path.
+    if (small > 0 && small < first[c + 1] - first[c] && !(small_box.area() <= kListGain * all_box.area())) {
+      for (std::uint32_t k = first[c]; k < first[c + 1]; ++k) big[k] = 0;
+      small_box = all_box;
+      small = first[c + 1] - first[c];
     }
     if (small == 0 || small_box.empty()) return;
     // Enlarged by the margin, so that clipping the ray to it never loses a primitive in its
