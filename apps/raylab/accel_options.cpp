@@ -10,6 +10,14 @@ void add_accel_parameter_options(CLI::App& cmd, AccelArgs& args) {
                  "Uniform grid: cells per primitive (resolution rule in docs/accelerators.md)")
       ->check(CLI::Range(1e-3, 1e3))
       ->capture_default_str();
+  cmd.add_option("--grid2-top-density", o.config.grid2.top_density,
+                 "Two-level grid: top cells per N^0.6 for N primitives (docs/accelerators.md)")
+      ->check(CLI::Range(1e-3, 1e3))
+      ->capture_default_str();
+  cmd.add_option("--grid2-leaf-density", o.config.grid2.leaf_density,
+                 "Two-level grid: cells per primitive in each top cell's leaf grid")
+      ->check(CLI::Range(1e-3, 1e3))
+      ->capture_default_str();
   cmd.add_option("--octree-max-items", o.config.octree.max_items, "Octree: a cell with more primitives is split (K)")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();

@@ -39,6 +39,11 @@ Setters setters_of(const std::string& accel) {
     return {{"density", setter(&AccelConfig::grid, &GridConfig::density)},
             {"mailbox", setter(&AccelConfig::grid, &GridConfig::mailbox)}};
   }
+  if (accel == "grid2") {
+    return {{"top_density", setter(&AccelConfig::grid2, &TwoLevelGridConfig::top_density)},
+            {"leaf_density", setter(&AccelConfig::grid2, &TwoLevelGridConfig::leaf_density)},
+            {"mailbox", setter(&AccelConfig::grid2, &TwoLevelGridConfig::mailbox)}};
+  }
   if (accel == "octree") {
     return {{"max_items", setter(&AccelConfig::octree, &OctreeConfig::max_items)},
             {"max_depth", setter(&AccelConfig::octree, &OctreeConfig::max_depth)},

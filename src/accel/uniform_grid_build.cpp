@@ -14,55 +14,18 @@
 #include <tbb/parallel_sort.h>
 
 #include "grid_distance.h"
+#include "grid_insert.h"
+#include "grid_walk.h"
 #include "mailbox.h"
 #include "raylab/accel/uniform_grid.h"
 #include "raylab/core/error.h"
 #include "raylab/core/stopwatch.h"
-#include "raylab/geometry/overlap.h"
 
 namespace raylab {
 namespace {
 
-// Cell boxes are enlarged before the overlap test, so that rounding in the traversal never skips
-// a primitive. The traversal hands each stretch [t_in, t_out] of the ray to one cell; the
-// exact ray point at those parameters can stray from the cell by the rounding of the boundary
-// parameters t_first + k * t_delta (a few ulps of the distance travelled) and, for the entry
-// cell, of the entry point's coordinates (an ulp of the coordinates). Where it strays into a
-// neighbour near an edge or corner, the walk may pass through that neighbour instead of the cell
-// the exact ray crosses, and a primitive touching only the latter would be missed. The margin
-// covers both sources:
-//  - kAbsMargin times the largest coordinate magnitude of the grid box: 2^-18 is 64 float ulps,
-//    enough for rays that travel up to ~20 scene sizes to their hit;
-//  - kRelMargin times the cell size, for the overlap tests' own rounding.
-// Both are far below a cell, so the extra references they add are few.
-constexpr float kRelMargin = 1e-4f;
-constexpr float kAbsMargin = 0x1p-18f;
-
 // Primitive references are 32-bit offsets; a grid needing more is rebuilt coarser.
 constexpr std::uint64_t kMaxReferences = std::numeric_limits<std::uint32_t>::max();
-
-// The range of cells on one axis whose enlarged boxes can touch [lo, hi] (inclusive); empty
-// (first > last) when none does.
-struct AxisRange {
-  int first, last;
-};
-
-AxisRange cells_touching(const std::vector<float>& planes, float inv_cell, float margin, float lo, float hi) {
-  const int n = static_cast<int>(planes.size()) - 1;
-  auto guess = [&](float x) {
-    const float f = (x - planes[0]) * inv_cell;
-    return f >= 0.f ? (f < float(n) ? static_cast<int>(f) : n - 1) : 0;  // NaN (a flat axis) -> 0
-  };
-  // first: the lowest cell whose upper face (enlarged) reaches lo.
-  int first = guess(lo - margin);
-  while (first > 0 && planes[first] + margin >= lo) --first;
-  while (first < n && planes[first + 1] + margin < lo) ++first;
-  // last: the highest cell whose lower face (enlarged) is at or below hi.
-  int last = guess(hi + margin);
-  while (last < n - 1 && planes[last + 1] - margin <= hi) ++last;
-  while (last >= 0 && planes[last] - margin > hi) --last;
-  return {first, last};
-}
 
 }  // namespace
 
@@ -164,41 +127,23 @@ void UniformGrid::build(std::array<int, 3> resolution) {
       m_cell[a] = cell;
       m_inv_cell[a] = cell > 0.f ? float(n) / extent[a] : 0.f;
       m_planes[a].resize(n + 1);
-      for (int i = 0; i < n; ++i) m_planes[a][i] = std::min(m_bounds.lo[a] + float(i) * cell, m_bounds.hi[a]);
-      m_planes[a][n] = m_bounds.hi[a];
-      margin[a] = kRelMargin * cell + kAbsMargin * scale;
+      for (int i = 0; i <= n; ++i) m_planes[a][i] = grid_plane(m_bounds.lo[a], m_bounds.hi[a], cell, i, n);
+      margin[a] = grid_margin(cell, scale);
     }
     const std::size_t nx = resolution[0], nxy = nx * std::size_t(resolution[1]);
     const std::size_t cells = nxy * std::size_t(resolution[2]);
     order_by_cell(resolution);
 
     // Calls visit(cell index) for every cell that primitive `local` overlaps (enlarged boxes).
+    auto planes_of = [&](int a) {
+      const float* p = m_planes[a].data();
+      return AxisPlanes{[p](int i) { return p[i]; }, resolution[a], m_inv_cell[a]};
+    };
+    const std::array axes{planes_of(0), planes_of(1), planes_of(2)};
     auto for_each_cell = [&](std::uint32_t local, auto&& visit) {
       const std::uint32_t id = m_ids[local];
-      const Box3 b = m_geometry.bounds(id);
-      AxisRange range[3];
-      for (int a = 0; a < 3; ++a) {
-        // A NaN or empty box (a degenerate primitive) touches nothing: no ray can hit it.
-        if (!(b.lo[a] <= b.hi[a])) return;
-        range[a] = cells_touching(m_planes[a], m_inv_cell[a], margin[a], b.lo[a], b.hi[a]);
-        if (range[a].first > range[a].last) return;
-      }
-      // A primitive whose box lies in a single cell overlaps it: no test needed.
-      const bool single =
-          range[0].first == range[0].last && range[1].first == range[1].last && range[2].first == range[2].last;
-      for (int z = range[2].first; z <= range[2].last; ++z) {
-        for (int y = range[1].first; y <= range[1].last; ++y) {
-          for (int x = range[0].first; x <= range[0].last; ++x) {
-            if (!single) {
-              const Box3 cell{
-                  {m_planes[0][x] - margin.x, m_planes[1][y] - margin.y, m_planes[2][z] - margin.z},
-                  {m_planes[0][x + 1] + margin.x, m_planes[1][y + 1] + margin.y, m_planes[2][z + 1] + margin.z}};
-              if (!overlaps_box(m_geometry, id, cell)) continue;
-            }
-            visit(x + nx * y + nxy * z);
-          }
-        }
-      }
+      for_each_overlapped_cell(m_geometry, id, m_geometry.bounds(id), axes, margin,
+                               [&](int x, int y, int z) { visit(x + nx * y + nxy * z); });
     };
 
     // Pass 1: how many references each cell gets (counted in m_offsets[c + 1]).
@@ -278,8 +223,7 @@ void UniformGrid::order_by_cell(std::array<int, 3> resolution) {
       const Vec3 c = m_geometry.bounds(m_ids[i]).center();
       std::uint64_t key = 0;
       for (int a = 2; a >= 0; --a) {
-        const float f = (c[a] - m_bounds.lo[a]) * m_inv_cell[a];
-        const int cell = f >= 0.f ? (f < float(resolution[a]) ? int(f) : resolution[a] - 1) : 0;
+        const int cell = clamp_cell((c[a] - m_bounds.lo[a]) * m_inv_cell[a], resolution[a]);
         key = key * std::uint64_t(resolution[a]) + std::uint64_t(cell);
       }
       keyed[i] = {key, m_ids[i]};

@@ -12,6 +12,7 @@
 #include "raylab/accel/accelerator.h"
 #include "raylab/accel/bvh.h"
 #include "raylab/accel/octree.h"
+#include "raylab/accel/two_level_grid.h"
 #include "raylab/accel/uniform_grid.h"
 #include "raylab/geometry/geometry.h"
 
@@ -19,9 +20,10 @@ namespace raylab {
 
 /// Parameters for every structure the factory can make; each reads only its own part.
 struct AccelConfig {
-  BvhConfig bvh;        ///< used by "bvh" (4-wide) and "bvh2" (binary)
-  GridConfig grid;      ///< used by "grid"
-  OctreeConfig octree;  ///< used by "octree"
+  BvhConfig bvh;             ///< used by "bvh" (4-wide) and "bvh2" (binary)
+  GridConfig grid;           ///< used by "grid"
+  TwoLevelGridConfig grid2;  ///< used by "grid2"
+  OctreeConfig octree;       ///< used by "octree"
 };
 
 /// Names the factory accepts in this build, in the order they are listed to users ("embree"

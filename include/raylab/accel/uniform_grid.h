@@ -26,12 +26,14 @@
 #include <span>
 #include <vector>
 
+#include "raylab/accel/cell_walk.h"
 #include "raylab/accel/traversal_accelerator.h"
 #include "raylab/geometry/geometry.h"
 
 namespace raylab {
 
 class Mailboxes;
+struct GridWalk;
 
 /// Build parameters of the uniform grid, with the defaults used by `--accel grid`.
 struct GridConfig {
@@ -67,7 +69,7 @@ std::array<int, 3> grid_resolution(const Box3& box, std::size_t count, float den
 ///
 /// Counted queries report as nodes_visited the cells walked plus the empty-space jumps, and as
 /// prim_tests the primitive tests actually run (after the mailboxes).
-class UniformGrid final : public TraversalAccelerator<UniformGrid> {
+class UniformGrid final : public TraversalAccelerator<UniformGrid>, public CellWalk {
  public:
   /// Builds the grid over every primitive of `geometry`, which must outlive this object.
   explicit UniformGrid(const Geometry& geometry, const GridConfig& config = {});
@@ -92,12 +94,14 @@ class UniformGrid final : public TraversalAccelerator<UniformGrid> {
   std::vector<std::uint32_t> cell_primitives(int x, int y, int z) const;
   /// Bytes of mailbox stamps each tracing thread allocates (0 when mailboxing is off).
   std::size_t mailbox_bytes_per_thread() const;
+  /// The cells a closest-hit query walks, from the query's own kernel: one entry per cell
+  /// counted in nodes_visited (a jump's entry is the cell it starts from).
+  std::vector<WalkedCell> cells_on_ray(const Ray& ray) const override;
 
  private:
   /// Cap on the empty-space distances, in cells: a jump crosses at most kMaxSkip - 1 cells per
   /// axis. A higher cap costs build time (the distance passes scan up to it per cell).
   static constexpr int kMaxSkip = 16;
-  struct Walk;
   void build(std::array<int, 3> resolution);
   // Fills m_skip from the offsets.
   void fill_skip_distances();
@@ -107,12 +111,15 @@ class UniformGrid final : public TraversalAccelerator<UniformGrid> {
   // The kernel of every query (TraversalAccelerator): clip, enter, walk.
   template <bool kAnyHit, bool kCount>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
+  // The kernel, telling `on_cell(walk, tested)` about every cell it counts (cells_on_ray).
+  template <bool kAnyHit, bool kCount, class OnCell>
+  bool run(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) const;
   // Clips the ray to the grid's box and sets up its walk from the entry cell; false when the
   // ray misses the grid.
-  bool clip_and_enter(const Ray& ray, Walk& walk) const;
+  bool clip_and_enter(const Ray& ray, GridWalk& walk) const;
   // Walks the cells from `walk` on; `mailbox` is the ray's stamp or a stand-in that tests all.
-  template <bool kAnyHit, bool kCount, class Mailbox>
-  bool walk_cells(Ray& ray, Hit& hit, TraversalStats* stats, Walk& walk, Mailbox mailbox) const;
+  template <bool kAnyHit, bool kCount, class Mailbox, class OnCell>
+  bool walk_cells(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk& walk, Mailbox mailbox, OnCell& on_cell) const;
 
   const Geometry& m_geometry;
   GridConfig m_config;
