@@ -15,7 +15,7 @@ namespace {
 
 // The stand-in for on_cell in the queries: nothing to tell.
 struct IgnoreCells {
-  void operator()(std::size_t, const int*, bool) const {}
+  void operator()(std::size_t, const int*, bool, int) const {}
 };
 
 }  // namespace
@@ -93,7 +93,7 @@ bool TwoLevelGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk& top
     const int distance = skip[index];
     if (distance == 0) {
       const TopCell& cell = cells[index];
-      on_cell(index, nullptr, offsets[cell.list] != offsets[cell.list + 1]);
+      on_cell(index, nullptr, offsets[cell.list] != offsets[cell.list + 1], 0);
       // The big primitives first: they span the cell, so they are likely to be hit.
       if (test_cell(cell.list)) break;
       // The leaf walk over the ray's stretch through the leaf grid's box inside this top cell.
@@ -104,7 +104,7 @@ bool TwoLevelGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk& top
           // A leaf grid of one cell: nothing to walk.
           if constexpr (kCount) ++counters.nodes_visited;
           static constexpr int kOrigin[3] = {0, 0, 0};
-          on_cell(index, kOrigin, offsets[cell.list + 1] != offsets[cell.list + 2]);
+          on_cell(index, kOrigin, offsets[cell.list + 1] != offsets[cell.list + 2], 0);
           over = test_cell(cell.list + 1);
         } else {
           // From the point where the ray enters the leaf box (clamped to the leaf grid:
@@ -126,7 +126,7 @@ bool TwoLevelGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk& top
             const float t_leaf_exit = leaf.exit();
             // 0: the leaf cell holds primitives; else the distance in cells to one that does.
             const int leaf_distance = leaf_skip[leaf.index];
-            on_cell(index, leaf.cell, leaf_distance == 0);
+            on_cell(index, leaf.cell, leaf_distance == 0, std::max(leaf_distance - 1, 0));
             if (leaf_distance > 1) {
               // Every leaf cell within leaf_distance - 1 is empty: cross that cube in one jump.
               float t_leave;
@@ -148,7 +148,7 @@ bool TwoLevelGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk& top
         if (over) break;
       }
     } else {
-      on_cell(index, nullptr, false);
+      on_cell(index, nullptr, false, std::max(distance - 1, 0));
       if (distance > 1) {
         // Every top cell within distance - 1 of this one is empty: cross that cube in one jump.
         float t_leave;
@@ -167,13 +167,20 @@ bool TwoLevelGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk& top
 std::vector<WalkedCell> TwoLevelGrid::cells_on_ray(const Ray& ray) const {
   std::vector<WalkedCell> cells;
   const std::size_t nx = m_top_resolution[0], ny = m_top_resolution[1];
-  auto record = [&](std::size_t index, const int* leaf, bool tested) {
+  // A top or leaf cell; with reach > 0, the cube of empty cells within reach of it that the walk
+  // crosses in one jump (clipped to its grid), as the union of the cube's two corner cells.
+  auto record = [&](std::size_t index, const int* leaf, bool tested, int reach) {
     const int x = int(index % nx), y = int((index / nx) % ny), z = int(index / (nx * ny));
-    if (leaf == nullptr) {
-      cells.push_back({top_cell_box(x, y, z), tested});
-    } else {
-      cells.push_back({leaf_cell_box(x, y, z, leaf[0], leaf[1], leaf[2]), tested});
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+      const int at = leaf == nullptr ? (a == 0 ? x : a == 1 ? y : z) : leaf[a];
+      const int n = leaf == nullptr ? m_top_resolution[a] : std::max(m_top[index].res[a], 1);
+      lo[a] = std::max(at - reach, 0);
+      hi[a] = std::min(at + reach, n - 1);
     }
+    Box3 box = leaf == nullptr ? top_cell_box(lo[0], lo[1], lo[2]) : leaf_cell_box(x, y, z, lo[0], lo[1], lo[2]);
+    box.extend(leaf == nullptr ? top_cell_box(hi[0], hi[1], hi[2]) : leaf_cell_box(x, y, z, hi[0], hi[1], hi[2]));
+    cells.push_back({box, tested});
   };
   Ray probe = ray;
   Hit hit;

@@ -18,7 +18,7 @@ namespace {
 
 // The stand-in for on_cell in the queries: nothing to tell.
 struct IgnoreCells {
-  void operator()(const GridWalk&, bool) const {}
+  void operator()(const GridWalk&, int) const {}
 };
 
 }  // namespace
@@ -78,7 +78,7 @@ bool UniformGrid::walk_cells(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk
     // 0: the cell holds primitives; else the (chessboard) distance in cells to one that does.
     const std::size_t index = w.index;
     const int distance = skip[index];
-    on_cell(w, distance == 0);
+    on_cell(w, distance);
     if (distance == 0) {
       if (intersect_references<kAnyHit, kCount>(prims, offsets[index], offsets[index + 1], SlotFromList{refs}, mailbox,
                                                 wr, ray, tmin, tmax, best, counters)) {
@@ -103,11 +103,16 @@ bool UniformGrid::walk_cells(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk
 
 std::vector<WalkedCell> UniformGrid::cells_on_ray(const Ray& ray) const {
   std::vector<WalkedCell> cells;
-  auto record = [&](const GridWalk& w, bool tested) {
-    const int x = w.cell[0], y = w.cell[1], z = w.cell[2];
-    cells.push_back({Box3{{m_planes[0][x], m_planes[1][y], m_planes[2][z]},
-                          {m_planes[0][x + 1], m_planes[1][y + 1], m_planes[2][z + 1]}},
-                     tested});
+  // A cell holding primitives, a single empty cell, or (distance > 1) the cube of empty cells
+  // within distance - 1 that the walk crosses in one jump, clipped to the grid.
+  auto record = [&](const GridWalk& w, int distance) {
+    const int reach = distance > 1 ? distance - 1 : 0;
+    Box3 box;
+    for (int a = 0; a < 3; ++a) {
+      box.lo[a] = m_planes[a][std::max(w.cell[a] - reach, 0)];
+      box.hi[a] = m_planes[a][std::min(w.cell[a] + reach + 1, m_resolution[a])];
+    }
+    cells.push_back({box, distance == 0});
   };
   Ray probe = ray;
   Hit hit;

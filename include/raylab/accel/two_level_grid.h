@@ -122,7 +122,8 @@ class TwoLevelGrid final : public TraversalAccelerator<TwoLevelGrid>, public Cel
   // The kernel of every query (TraversalAccelerator).
   template <bool kAnyHit, bool kCount>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
-  // The kernel, telling on_cell(top index, leaf walk or null, tested) about every cell it counts.
+  // The kernel, telling on_cell(top index, leaf cell or null, tested, jump reach in cells) about
+  // every cell it counts.
   template <bool kAnyHit, bool kCount, class OnCell>
   bool run(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) const;
   // Clips the ray to the box and sets up the top walk; false when the ray misses the grid.

@@ -111,7 +111,8 @@ class UniformGrid final : public TraversalAccelerator<UniformGrid>, public CellW
   // The kernel of every query (TraversalAccelerator): clip, enter, walk.
   template <bool kAnyHit, bool kCount>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
-  // The kernel, telling `on_cell(walk, tested)` about every cell it counts (cells_on_ray).
+  // The kernel, telling `on_cell(walk, empty-space distance)` about every cell it counts
+  // (cells_on_ray).
   template <bool kAnyHit, bool kCount, class OnCell>
   bool run(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) const;
   // Clips the ray to the grid's box and sets up its walk from the entry cell; false when the
