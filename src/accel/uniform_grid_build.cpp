@@ -14,6 +14,7 @@
 #include <tbb/parallel_sort.h>
 
 #include "grid_distance.h"
+#include "grid_insert.h"
 #include "mailbox.h"
 #include "raylab/accel/uniform_grid.h"
 #include "raylab/core/error.h"
@@ -23,46 +24,10 @@
 namespace raylab {
 namespace {
 
-// Cell boxes are enlarged before the overlap test, so that rounding in the traversal never skips
-// a primitive. The traversal hands each stretch [t_in, t_out] of the ray to one cell; the
-// exact ray point at those parameters can stray from the cell by the rounding of the boundary
-// parameters t_first + k * t_delta (a few ulps of the distance travelled) and, for the entry
-// cell, of the entry point's coordinates (an ulp of the coordinates). Where it strays into a
-// neighbour near an edge or corner, the walk may pass through that neighbour instead of the cell
-// the exact ray crosses, and a primitive touching only the latter would be missed. The margin
-// covers both sources:
-//  - kAbsMargin times the largest coordinate magnitude of the grid box: 2^-18 is 64 float ulps,
-//    enough for rays that travel up to ~20 scene sizes to their hit;
-//  - kRelMargin times the cell size, for the overlap tests' own rounding.
-// Both are far below a cell, so the extra references they add are few.
-constexpr float kRelMargin = 1e-4f;
-constexpr float kAbsMargin = 0x1p-18f;
+// The margins (kGridRelMargin, kGridAbsMargin) and cells_touching are in grid_insert.h.
 
 // Primitive references are 32-bit offsets; a grid needing more is rebuilt coarser.
 constexpr std::uint64_t kMaxReferences = std::numeric_limits<std::uint32_t>::max();
-
-// The range of cells on one axis whose enlarged boxes can touch [lo, hi] (inclusive); empty
-// (first > last) when none does.
-struct AxisRange {
-  int first, last;
-};
-
-AxisRange cells_touching(const std::vector<float>& planes, float inv_cell, float margin, float lo, float hi) {
-  const int n = static_cast<int>(planes.size()) - 1;
-  auto guess = [&](float x) {
-    const float f = (x - planes[0]) * inv_cell;
-    return f >= 0.f ? (f < float(n) ? static_cast<int>(f) : n - 1) : 0;  // NaN (a flat axis) -> 0
-  };
-  // first: the lowest cell whose upper face (enlarged) reaches lo.
-  int first = guess(lo - margin);
-  while (first > 0 && planes[first] + margin >= lo) --first;
-  while (first < n && planes[first + 1] + margin < lo) ++first;
-  // last: the highest cell whose lower face (enlarged) is at or below hi.
-  int last = guess(hi + margin);
-  while (last < n - 1 && planes[last + 1] - margin <= hi) ++last;
-  while (last >= 0 && planes[last] - margin > hi) --last;
-  return {first, last};
-}
 
 }  // namespace
 
@@ -166,7 +131,7 @@ void UniformGrid::build(std::array<int, 3> resolution) {
       m_planes[a].resize(n + 1);
       for (int i = 0; i < n; ++i) m_planes[a][i] = std::min(m_bounds.lo[a] + float(i) * cell, m_bounds.hi[a]);
       m_planes[a][n] = m_bounds.hi[a];
-      margin[a] = kRelMargin * cell + kAbsMargin * scale;
+      margin[a] = kGridRelMargin * cell + kGridAbsMargin * scale;
     }
     const std::size_t nx = resolution[0], nxy = nx * std::size_t(resolution[1]);
     const std::size_t cells = nxy * std::size_t(resolution[2]);

@@ -11,6 +11,7 @@
 
 #include "raylab/accel/accelerator.h"
 #include "raylab/accel/bvh.h"
+#include "raylab/accel/irregular_grid.h"
 #include "raylab/accel/octree.h"
 #include "raylab/accel/uniform_grid.h"
 #include "raylab/geometry/geometry.h"
@@ -22,6 +23,7 @@ struct AccelConfig {
   BvhConfig bvh;        ///< used by "bvh" (4-wide) and "bvh2" (binary)
   GridConfig grid;      ///< used by "grid"
   OctreeConfig octree;  ///< used by "octree"
+  IrregularGridConfig irregular;  ///< used by "irregular"
 };
 
 /// Names the factory accepts in this build, in the order they are listed to users ("embree"
