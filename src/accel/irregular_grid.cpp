@@ -92,12 +92,11 @@ bool IrregularGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, MakeMailbox 
   bool up[3], still[3];
   for (int a = 0; a < 3; ++a) {
     const int n = g.lattice[a];
-    const float f = (entry[a] - g.bounds.lo[a]) * g.inv_step[a];
+    const float f = (entry[a] - g.origin[a]) * g.inv_step[a];
     voxel[a] = f >= 0.f ? (f < float(n) ? static_cast<int>(f) : n - 1) : 0;  // NaN -> 0
     up[a] = d[a] > 0.f;
     still[a] = d[a] == 0.f || !std::isfinite(inv_d[a]);
   }
-  const float* const planes[3] = {g.planes[0].data(), g.planes[1].data(), g.planes[2].data()};
   const IrregularCell* const cells = g.cells.data();
   auto mailbox = make_mailbox();
   const WatertightRay wr(ray);
@@ -122,7 +121,7 @@ bool IrregularGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, MakeMailbox 
     // Where the ray leaves the expanded box: the nearest of its three far planes.
     float t[3];
     for (int a = 0; a < 3; ++a) {
-      t[a] = still[a] ? kInf : (planes[a][up[a] ? cell.hi[a] : cell.lo[a]] - o[a]) * inv_d[a];
+      t[a] = still[a] ? kInf : (g.plane(a, up[a] ? cell.hi[a] : cell.lo[a]) - o[a]) * inv_d[a];
     }
     const float t_exit = std::min(t[0], std::min(t[1], t[2]));
     // A hit before the exit is the closest (see the top of the file); a range ending inside the
@@ -134,7 +133,7 @@ bool IrregularGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, MakeMailbox 
     for (int a = 0; a < 3; ++a) {
       if (a == x || still[a]) continue;
       const int n = g.lattice[a];
-      const float f = (o[a] + t_exit * d[a] - g.bounds.lo[a]) * g.inv_step[a];
+      const float f = (o[a] + t_exit * d[a] - g.origin[a]) * g.inv_step[a];
       int k = f >= 0.f ? (f < float(n) ? static_cast<int>(f) : n - 1) : 0;
       k = std::clamp(k, int(cell.lo[a]), int(cell.hi[a]) - 1);
       voxel[a] = up[a] ? std::max(k, voxel[a]) : std::min(k, voxel[a]);
@@ -163,11 +162,9 @@ AccelInfo IrregularGrid::info() const {
   AccelInfo info;
   info.name = "irregular";
   info.build_seconds = m_build_seconds;
-  std::size_t planes = 0;
-  for (const auto& p : m_data.planes) planes += p.size();
   info.memory_bytes = sizeof(*this) + m_data.cells.size() * sizeof(IrregularCell) +
-                      (m_data.refs.size() + m_data.ids.size() + m_data.sub.size()) * sizeof(std::uint32_t) +
-                      m_data.top.size() * sizeof(IrregularGridData::TopEntry) + planes * sizeof(float);
+                      (m_data.refs.size() + m_data.ids.size() + m_data.top.size() + m_data.map.size()) * sizeof(std::uint32_t) +
+                      m_data.nodes.size() * sizeof(IrregularGridData::Node);
   info.node_count = m_data.cell_count();
   info.leaf_count = m_data.nonempty_cells;
   info.primitive_count = m_data.ids.size();

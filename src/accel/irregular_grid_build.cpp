@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include <tbb/parallel_for.h>
 
@@ -27,18 +29,121 @@ void check_config(const IrregularGridConfig& c) {
   if (!(c.step_cost >= 0.f) || !(c.prim_cost >= 0.f) || !std::isfinite(c.step_cost + c.prim_cost)) {
     throw UsageError("irregular grid cost constants must be finite and >= 0");
   }
-  if (c.max_shift < 0 || c.max_shift > 6 || c.merge_rounds < 0 || c.expand_rounds < 0) {
-    throw UsageError("irregular grid: max_shift must be in [0, 6], merge and expand rounds >= 0");
+  if (c.max_shift < 1 || c.max_shift > 6 || c.max_depth < 0 || c.max_depth > 16 || c.merge_rounds < 0 ||
+      c.expand_rounds < 0) {
+    throw UsageError("irregular grid: max_shift must be in [1, 6], max_depth in [0, 16], rounds >= 0");
   }
 }
 
-// The subdivision level of a top cell holding `count` references: about sub_density * count
-// cells, i.e. 2^s = cbrt(sub_density * count) per axis.
-int subdivision_level(std::uint32_t count, float sub_density, int max_shift) {
-  if (count == 0) return 0;
-  const double s = std::round(std::log2(double(sub_density) * count) / 3.0);
-  return static_cast<int>(std::clamp(s, 0.0, double(max_shift)));
-}
+// Below the top level, a cell holding this many references or fewer is not subdivided: a
+// vertex shared by a handful of triangles would otherwise be split down to the last level.
+constexpr std::size_t kSplitMinRefs = 4;
+
+// Below the top level, a subdivision into m^3 children is kept only when the children together
+// hold fewer than this times m^2 times the parent's references. A ray through the parent meets a
+// given child with probability about 1/m^2 (the child's share of the parent's cross-section), so
+// the split is expected to cost it sum(children) / m^2 tests instead of the parent's n: it must
+// save at least a quarter. The octree's rule (kOctreeSplitGainRatio), for any m.
+constexpr double kSplitGain = 0.75;
+
+// One top cell's share of the virtual grid, built on its own thread and spliced in afterwards.
+struct Local {
+  std::vector<std::array<std::uint16_t, 6>> boxes;  // per cell
+  std::vector<std::uint32_t> counts;                // references per cell
+  std::vector<std::uint32_t> refs;                  // cell by cell
+  std::vector<IrregularGridData::Node> nodes;       // begin: into `map`
+  std::vector<std::uint32_t> map;                   // leaves: local cell indices; else local nodes
+};
+
+// Cuts cells recursively, by the count rule, into 2^s cells per axis.
+class Subdivider {
+ public:
+  Subdivider(const Geometry& geometry, const IrregularGridData& data, const IrregularGridConfig& config, Vec3 margin)
+      : m_geometry(geometry), m_data(data), m_config(config), m_margin(margin) {}
+
+  // The map entry for the cell with lattice corner `lo`, 2^level steps per axis, holding `refs`
+  // (slots, ascending); `top`: it is a top cell.
+  std::uint32_t build(const int lo[3], int level, std::vector<std::uint32_t> refs, bool top, Local& out) const {
+    const std::size_t n = refs.size();
+    int s = 0;
+    if (n > 0 && (top || n > kSplitMinRefs)) {
+      const double want = std::round(std::log2(double(m_config.sub_density) * double(n)) / 3.0);
+      s = static_cast<int>(std::clamp(want, 0.0, double(std::min(m_config.max_shift, level))));
+    }
+    std::vector<std::vector<std::uint32_t>> children;
+    if (s > 0) {
+      children = split(lo, level, s, refs);
+      std::size_t total = 0;
+      for (const auto& c : children) total += c.size();
+      const double m = double(1 << s);
+      if (!top && double(total) >= kSplitGain * m * m * double(n)) s = 0;  // no gain: a leaf
+    }
+    if (s == 0) {
+      const int size = 1 << level;
+      out.boxes.push_back({std::uint16_t(lo[0]), std::uint16_t(lo[1]), std::uint16_t(lo[2]),
+                           std::uint16_t(lo[0] + size), std::uint16_t(lo[1] + size), std::uint16_t(lo[2] + size)});
+      out.counts.push_back(static_cast<std::uint32_t>(n));
+      out.refs.insert(out.refs.end(), refs.begin(), refs.end());
+      return static_cast<std::uint32_t>(out.boxes.size() - 1) | IrregularGridData::kLeaf;
+    }
+    refs = {};  // the children hold them now
+    const int m = 1 << s, child_level = level - s;
+    const auto node = static_cast<std::uint32_t>(out.nodes.size());
+    const auto block = static_cast<std::uint32_t>(out.map.size());
+    out.nodes.push_back({block, static_cast<std::uint32_t>(s)});
+    out.map.resize(block + std::size_t(m) * m * m);
+    for (int l = 0; l < m * m * m; ++l) {
+      const int corner[3] = {lo[0] + ((l & (m - 1)) << child_level), lo[1] + (((l >> s) & (m - 1)) << child_level),
+                             lo[2] + ((l >> (2 * s)) << child_level)};
+      const std::uint32_t entry = build(corner, child_level, std::move(children[l]), false, out);
+      out.map[block + l] = entry;
+    }
+    return node;
+  }
+
+ private:
+  // The references of each of the m^3 children (x fastest) of the cell, ascending.
+  std::vector<std::vector<std::uint32_t>> split(const int lo[3], int level, int s,
+                                                const std::vector<std::uint32_t>& refs) const {
+    const int m = 1 << s, stride = 1 << (level - s);
+    std::array<std::vector<float>, 3> planes;
+    Vec3 inv;
+    for (int a = 0; a < 3; ++a) {
+      planes[a].resize(m + 1);
+      for (int j = 0; j <= m; ++j) planes[a][j] = m_data.plane(a, lo[a] + j * stride);
+      inv[a] = m_data.inv_step[a] / float(stride);
+    }
+    const Vec3 margin = m_margin;
+    std::vector<std::vector<std::uint32_t>> children(std::size_t(m) * m * m);
+    for (const std::uint32_t slot : refs) {  // ascending, so every child's list is too
+      const std::uint32_t id = m_data.ids[slot];
+      const Box3 b = m_geometry.bounds(id);
+      AxisRange r[3];
+      for (int a = 0; a < 3; ++a) r[a] = cells_touching(planes[a], inv[a], margin[a], b.lo[a], b.hi[a]);
+      // A primitive whose box touches one child only lies in it (it touches the parent, which
+      // the enlarged children cover): no test needed.
+      const bool single = r[0].first == r[0].last && r[1].first == r[1].last && r[2].first == r[2].last;
+      for (int z = r[2].first; z <= r[2].last; ++z) {
+        for (int y = r[1].first; y <= r[1].last; ++y) {
+          for (int x = r[0].first; x <= r[0].last; ++x) {
+            if (!single) {
+              const Box3 cell{{planes[0][x] - margin.x, planes[1][y] - margin.y, planes[2][z] - margin.z},
+                              {planes[0][x + 1] + margin.x, planes[1][y + 1] + margin.y, planes[2][z + 1] + margin.z}};
+              if (!overlaps_box(m_geometry, id, cell)) continue;
+            }
+            children[x + (y << s) + (z << (2 * s))].push_back(slot);
+          }
+        }
+      }
+    }
+    return children;
+  }
+
+  const Geometry& m_geometry;
+  const IrregularGridData& m_data;
+  const IrregularGridConfig& m_config;
+  Vec3 m_margin;
+};
 
 }  // namespace
 
@@ -48,32 +153,31 @@ IrregularBuildCells build_virtual_grid(const Geometry& geometry, IrregularGridDa
   const auto count = static_cast<std::uint32_t>(data.ids.size());
   std::array<int, 3> res = grid_resolution(data.bounds, count, config.top_density);
   const Vec3 extent = data.bounds.extent();
-  int shift = config.max_shift;
   for (int a = 0; a < 3; ++a) {
     if (!(extent[a] > 0.f)) res[a] = 1;
     res[a] = std::min(res[a], kIrregularMaxLattice);
   }
-  // Coordinates are 16-bit: fewer levels, then fewer top cells, until the lattice fits.
-  while (shift > 0 && std::max({res[0], res[1], res[2]}) << shift > kIrregularMaxLattice) --shift;
+  // Coordinates are 16-bit: fewer levels below the top cells until the lattice fits.
+  int depth = config.max_depth;
+  while (depth > 0 && std::max({res[0], res[1], res[2]}) << depth > kIrregularMaxLattice) --depth;
   data.top_res = res;
-  data.max_shift = shift;
+  data.depth = depth;
 
-  // The lattice planes: every cell boundary of every level is one of these floats, so the
-  // build's cell boxes and the traversal's exits agree bit for bit.
+  // The lattice: plane k at origin + k * step, the step rounded up until the last plane reaches
+  // the box's upper face, so the lattice covers every primitive.
   float scale = 0.f;
   for (int a = 0; a < 3; ++a) scale = std::max({scale, std::fabs(data.bounds.lo[a]), std::fabs(data.bounds.hi[a])});
   Vec3 margin;
+  data.origin = data.bounds.lo;
   for (int a = 0; a < 3; ++a) {
-    const int n = res[a] << shift;
+    const int n = res[a] << depth;
     data.lattice[a] = n;
-    const float step = extent[a] / float(n);
-    data.inv_step[a] = step > 0.f ? float(n) / extent[a] : 0.f;
-    auto& p = data.planes[a];
-    p.resize(n + 1);
-    for (int i = 0; i < n; ++i) p[i] = std::min(data.bounds.lo[a] + float(i) * step, data.bounds.hi[a]);
-    p[n] = data.bounds.hi[a];
-    // One margin for both levels, so a primitive touching an enlarged virtual cell always
-    // touches its enlarged top cell and reaches the second pass.
+    float step = extent[a] / float(n);
+    while (data.bounds.lo[a] + float(n) * step < data.bounds.hi[a]) step = std::nextafter(step, INFINITY);
+    data.step[a] = step;
+    data.inv_step[a] = step > 0.f ? 1.f / step : 0.f;
+    // One margin for every level, so a primitive touching an enlarged cell always touches its
+    // enlarged parent and reaches the level below.
     margin[a] = kGridRelMargin * step + kGridAbsMargin * scale;
   }
 
@@ -82,8 +186,8 @@ IrregularBuildCells build_virtual_grid(const Geometry& geometry, IrregularGridDa
   Vec3 top_inv;
   for (int a = 0; a < 3; ++a) {
     top_planes[a].resize(res[a] + 1);
-    for (int i = 0; i <= res[a]; ++i) top_planes[a][i] = data.planes[a][i << shift];
-    top_inv[a] = data.inv_step[a] / float(1 << shift);
+    for (int i = 0; i <= res[a]; ++i) top_planes[a][i] = data.plane(a, i << depth);
+    top_inv[a] = data.inv_step[a] / float(1 << depth);
   }
   const std::size_t nx = res[0], nxy = nx * res[1], top_cells = nxy * res[2];
   auto for_each_top_cell = [&](std::uint32_t slot, auto&& visit) {
@@ -131,85 +235,57 @@ IrregularBuildCells build_virtual_grid(const Geometry& geometry, IrregularGridDa
     });
   }
 
-  // The lookup map: each top cell's level, and its block of virtual cells. Virtual cell i is
-  // cell i until merging renumbers them.
+  // Below the top cells, each on its own, in parallel.
+  const Subdivider subdivider(geometry, data, config, margin);
+  std::vector<Local> locals(top_cells);
   data.top.resize(top_cells);
-  std::size_t virtual_cells = 0;
-  for (std::size_t t = 0; t < top_cells; ++t) {
-    const int s = subdivision_level(top_begin[t + 1] - top_begin[t], config.sub_density, shift);
-    data.top[t] = {static_cast<std::uint32_t>(virtual_cells), static_cast<std::uint32_t>(s)};
-    virtual_cells += std::size_t{1} << (3 * s);
-  }
-  if (virtual_cells >= std::numeric_limits<std::uint32_t>::max()) throw UsageError("irregular grid: too many cells");
-  data.sub.resize(virtual_cells);
-  out.boxes.resize(virtual_cells);
-  out.begin.assign(virtual_cells + 1, 0u);
+  tbb::parallel_for(std::size_t{0}, top_cells, [&](std::size_t t) {
+    std::vector<std::uint32_t> refs(top_refs.begin() + top_begin[t], top_refs.begin() + top_begin[t + 1]);
+    std::sort(refs.begin(), refs.end());
+    const int corner[3] = {int(t % nx) << depth, int((t / nx) % res[1]) << depth, int(t / nxy) << depth};
+    data.top[t] = subdivider.build(corner, depth, std::move(refs), true, locals[t]);
+  });
 
-  // Second level, per top cell in parallel: the virtual cells each of its primitives overlaps,
-  // listed by a counting sort that keeps the primitives ascending in every cell.
-  std::vector<std::vector<std::uint32_t>> local_refs(top_cells);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, top_cells, 16), [&](const auto& range) {
-    std::array<std::vector<float>, 3> planes;
-    std::vector<std::uint32_t> pairs;  // (local cell, slot), flattened
-    for (std::size_t t = range.begin(); t != range.end(); ++t) {
-      std::sort(top_refs.begin() + top_begin[t], top_refs.begin() + top_begin[t + 1]);
-      const int s = static_cast<int>(data.top[t].shift);
-      const int m = 1 << s, stride = 1 << (shift - s);
-      const std::uint32_t base = data.top[t].begin;
-      const int corner[3] = {int(t % nx) << shift, int((t / nx) % res[1]) << shift, int(t / nxy) << shift};
-      Vec3 inv;
-      for (int a = 0; a < 3; ++a) {
-        planes[a].resize(m + 1);
-        for (int j = 0; j <= m; ++j) planes[a][j] = data.planes[a][corner[a] + j * stride];
-        inv[a] = data.inv_step[a] / float(stride);
-      }
-      for (int l = 0; l < m * m * m; ++l) {
-        const int lx = l & (m - 1), ly = (l >> s) & (m - 1), lz = l >> (2 * s);
-        auto& box = out.boxes[base + l];
-        box = {std::uint16_t(corner[0] + lx * stride),       std::uint16_t(corner[1] + ly * stride),
-               std::uint16_t(corner[2] + lz * stride),       std::uint16_t(corner[0] + (lx + 1) * stride),
-               std::uint16_t(corner[1] + (ly + 1) * stride), std::uint16_t(corner[2] + (lz + 1) * stride)};
-        data.sub[base + l] = base + l;
-      }
-      pairs.clear();
-      for (std::uint32_t k = top_begin[t]; k < top_begin[t + 1]; ++k) {
-        const std::uint32_t slot = top_refs[k];
-        const std::uint32_t id = data.ids[slot];
-        if (s == 0) {
-          pairs.insert(pairs.end(), {0u, slot});
-          continue;
-        }
-        const Box3 b = geometry.bounds(id);
-        AxisRange r[3];
-        for (int a = 0; a < 3; ++a) r[a] = cells_touching(planes[a], inv[a], margin[a], b.lo[a], b.hi[a]);
-        const bool single = r[0].first == r[0].last && r[1].first == r[1].last && r[2].first == r[2].last;
-        for (int z = r[2].first; z <= r[2].last; ++z) {
-          for (int y = r[1].first; y <= r[1].last; ++y) {
-            for (int x = r[0].first; x <= r[0].last; ++x) {
-              if (!single) {
-                const Box3 cell{{planes[0][x] - margin.x, planes[1][y] - margin.y, planes[2][z] - margin.z},
-                                {planes[0][x + 1] + margin.x, planes[1][y + 1] + margin.y, planes[2][z + 1] + margin.z}};
-                if (!overlaps_box(geometry, id, cell)) continue;
-              }
-              pairs.insert(pairs.end(), {std::uint32_t(x + (y << s) + (z << (2 * s))), slot});
-            }
-          }
-        }
-      }
-      // Counting sort by local cell; stable, so each cell's slots stay ascending.
-      for (std::size_t p = 0; p < pairs.size(); p += 2) ++out.begin[base + pairs[p] + 1];
-      std::vector<std::uint32_t> offset(m * m * m + 1, 0u);
-      for (int l = 0; l < m * m * m; ++l) offset[l + 1] = offset[l] + out.begin[base + l + 1];
-      auto& mine = local_refs[t];
-      mine.resize(pairs.size() / 2);
-      for (std::size_t p = 0; p < pairs.size(); p += 2) mine[offset[pairs[p]]++] = pairs[p + 1];
+  // Splice the top cells' shares together: cells, references, nodes and map, in top cell order.
+  std::vector<std::size_t> cell_off(top_cells + 1, 0), node_off(top_cells + 1, 0), map_off(top_cells + 1, 0),
+      ref_off(top_cells + 1, 0);
+  for (std::size_t t = 0; t < top_cells; ++t) {
+    cell_off[t + 1] = cell_off[t] + locals[t].boxes.size();
+    node_off[t + 1] = node_off[t] + locals[t].nodes.size();
+    map_off[t + 1] = map_off[t] + locals[t].map.size();
+    ref_off[t + 1] = ref_off[t] + locals[t].refs.size();
+  }
+  if (cell_off[top_cells] >= IrregularGridData::kLeaf || node_off[top_cells] >= IrregularGridData::kLeaf ||
+      map_off[top_cells] >= IrregularGridData::kLeaf || ref_off[top_cells] >= IrregularGridData::kLeaf) {
+    throw UsageError("irregular grid: too many cells or references");
+  }
+  const std::size_t cells = cell_off[top_cells];
+  out.boxes.resize(cells);
+  out.begin.resize(cells + 1);
+  out.refs.resize(ref_off[top_cells]);
+  data.nodes.resize(node_off[top_cells]);
+  data.map.resize(map_off[top_cells]);
+  tbb::parallel_for(std::size_t{0}, top_cells, [&](std::size_t t) {
+    const Local& l = locals[t];
+    auto relocate = [&](std::uint32_t e) {
+      return (e & IrregularGridData::kLeaf) ? std::uint32_t((e & ~IrregularGridData::kLeaf) + cell_off[t]) |
+                                                  IrregularGridData::kLeaf
+                                            : std::uint32_t(e + node_off[t]);
+    };
+    data.top[t] = relocate(data.top[t]);
+    for (std::size_t i = 0; i < l.map.size(); ++i) data.map[map_off[t] + i] = relocate(l.map[i]);
+    for (std::size_t i = 0; i < l.nodes.size(); ++i) {
+      data.nodes[node_off[t] + i] = {std::uint32_t(l.nodes[i].begin + map_off[t]), l.nodes[i].shift};
+    }
+    std::copy(l.boxes.begin(), l.boxes.end(), out.boxes.begin() + cell_off[t]);
+    std::copy(l.refs.begin(), l.refs.end(), out.refs.begin() + ref_off[t]);
+    std::uint32_t at = static_cast<std::uint32_t>(ref_off[t]);
+    for (std::size_t i = 0; i < l.counts.size(); ++i) {
+      out.begin[cell_off[t] + i] = at;
+      at += l.counts[i];
     }
   });
-  for (std::size_t c = 1; c <= virtual_cells; ++c) out.begin[c] += out.begin[c - 1];
-  out.refs.resize(out.begin[virtual_cells]);
-  tbb::parallel_for(std::size_t{0}, top_cells, [&](std::size_t t) {
-    std::copy(local_refs[t].begin(), local_refs[t].end(), out.refs.begin() + out.begin[data.top[t].begin]);
-  });
+  out.begin[cells] = static_cast<std::uint32_t>(out.refs.size());
   return out;
 }
 

@@ -27,14 +27,14 @@ struct IrregularBuildCells {
   }
 };
 
-/// Fills the lattice, the lookup map (top, sub: one cell per virtual cell) and `data.bounds` from
-/// `data.ids`, and returns the virtual grid's cells: each top cell cut into 2^s per axis, every
+/// Fills the lattice and the lookup map from `data.ids` and `data.bounds`, and returns the
+/// virtual grid's cells: top cells cut into 2^s per axis by their counts, recursively, every
 /// primitive referenced by every cell its surface overlaps (enlarged by the grid margins).
 IrregularBuildCells build_virtual_grid(const Geometry& geometry, IrregularGridData& data,
                                        const IrregularGridConfig& config);
 
 /// Merges neighbouring cells where the cost model says it pays (alternating x, y, z passes, at
-/// most config.merge_rounds rounds), renumbering the cells and the lookup map (data.sub).
+/// most config.merge_rounds rounds), renumbering the cells and the lookup map's leaves.
 void merge_cells(IrregularBuildCells& cells, IrregularGridData& data, const IrregularGridConfig& config);
 
 /// The finished cells: each one's box expanded over the neighbouring cells whose references it

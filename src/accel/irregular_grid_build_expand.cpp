@@ -28,7 +28,10 @@ bool grow_face(const IrregularBuildCells& cells, const IrregularGridData& data, 
   int p[3];
   p[axis] = side == 1 ? hi[axis] : lo[axis] - 1;
   std::uint32_t last_checked = 0xffffffffu;
-  for (p[v] = lo[v]; p[v] < hi[v]; ++p[v]) {
+  // Row by row across the face; the cells met along a row all reach at least to the nearest of
+  // their upper v faces, so the rows up to there meet the same cells and are skipped.
+  for (p[v] = lo[v]; p[v] < hi[v];) {
+    int row_end = hi[v];
     for (p[u] = lo[u]; p[u] < hi[u];) {
       const std::uint32_t c = data.cell_at(p[0], p[1], p[2]);
       const auto& b = cells.boxes[c];
@@ -38,8 +41,10 @@ bool grow_face(const IrregularBuildCells& cells, const IrregularGridData& data, 
         last_checked = c;
       }
       reach = side == 1 ? std::min(reach, int(b[axis + 3])) : std::max(reach, int(b[axis]));
+      row_end = std::min(row_end, int(b[v + 3]));
       p[u] = b[u + 3];
     }
+    p[v] = row_end;
   }
   (side == 1 ? hi[axis] : lo[axis]) = reach;
   return true;

@@ -24,7 +24,7 @@ constexpr std::uint32_t kNone = 0xffffffffu;
 // Half the surface area of lattice box `b`, in world units.
 float half_area(const IrregularGridData& data, const std::array<std::uint16_t, 6>& b) {
   float e[3];
-  for (int a = 0; a < 3; ++a) e[a] = data.planes[a][b[a + 3]] - data.planes[a][b[a]];
+  for (int a = 0; a < 3; ++a) e[a] = data.plane(a, b[a + 3]) - data.plane(a, b[a]);
   return e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
 }
 
@@ -58,7 +58,7 @@ bool merge_pass(IrregularBuildCells& cells, IrregularGridData& data, const Irreg
 
   // Greedy merging along each chain: leader[c] is the first cell of the group c joins.
   const float c_step = config.step_cost, c_prim = config.prim_cost;
-  std::vector<std::uint32_t> leader(n);
+  std::vector<std::uint32_t> leader(n), size(n, 0u);
   std::atomic<bool> merged{false};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const auto& r) {
     std::vector<std::uint32_t> acc, joined;
@@ -71,6 +71,7 @@ bool merge_pass(IrregularBuildCells& cells, IrregularGridData& data, const Irreg
       float cost = half_area(data, box) * (c_step + c_prim * float(acc.size()));
       leader[head] = lead;
       for (std::uint32_t c = next[head]; c != kNone; c = next[c]) {
+        size[lead] = static_cast<std::uint32_t>(acc.size());
         const auto nb = cells.refs_of(c);
         const float nb_cost = half_area(data, cells.boxes[c]) * (c_step + c_prim * float(nb.size()));
         auto both = box;
@@ -91,6 +92,7 @@ bool merge_pass(IrregularBuildCells& cells, IrregularGridData& data, const Irreg
           cost = nb_cost;
         }
       }
+      size[lead] = static_cast<std::uint32_t>(acc.size());
     }
   });
   if (!merged.load()) return false;
@@ -108,32 +110,41 @@ bool merge_pass(IrregularBuildCells& cells, IrregularGridData& data, const Irreg
   IrregularBuildCells out;
   out.boxes.resize(groups);
   out.begin.assign(groups + 1, 0u);
-  std::vector<std::vector<std::uint32_t>> group_refs(groups);
+  for (std::size_t g = 0; g < groups; ++g) out.begin[g + 1] = out.begin[g] + size[leaders[g]];
+  out.refs.resize(out.begin[groups]);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, groups, 256), [&](const auto& r) {
-    std::vector<std::uint32_t> joined;
+    std::vector<std::uint32_t> acc, joined;
     for (std::size_t g = r.begin(); g != r.end(); ++g) {
       const std::uint32_t lead = leaders[g];
       auto box = cells.boxes[lead];
       auto refs = cells.refs_of(lead);
-      auto& acc = group_refs[g];
+      std::uint32_t c = next[lead];
+      if (c == kNone || leader[c] != lead) {  // a group of one: most of them
+        out.boxes[g] = box;
+        std::copy(refs.begin(), refs.end(), out.refs.begin() + out.begin[g]);
+        continue;
+      }
       acc.assign(refs.begin(), refs.end());
-      for (std::uint32_t c = next[lead]; c != kNone && leader[c] == lead; c = next[c]) {
+      for (; c != kNone && leader[c] == lead; c = next[c]) {
         box[axis + 3] = cells.boxes[c][axis + 3];
         unite(acc, cells.refs_of(c), joined);
         acc.swap(joined);
       }
       out.boxes[g] = box;
-      out.begin[g + 1] = static_cast<std::uint32_t>(acc.size());
+      std::copy(acc.begin(), acc.end(), out.refs.begin() + out.begin[g]);
     }
   });
-  for (std::size_t g = 1; g <= groups; ++g) out.begin[g] += out.begin[g - 1];
-  out.refs.resize(out.begin[groups]);
-  tbb::parallel_for(std::size_t{0}, groups, [&](std::size_t g) {
-    std::copy(group_refs[g].begin(), group_refs[g].end(), out.refs.begin() + out.begin[g]);
-  });
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, data.sub.size(), 4096), [&](const auto& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i) data.sub[i] = index[leader[data.sub[i]]];
-  });
+  // The map's leaves now name the merged cells.
+  auto renumber = [&](std::vector<std::uint32_t>& entries) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, entries.size(), 4096), [&](const auto& r) {
+      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+        std::uint32_t& e = entries[i];
+        if (e & IrregularGridData::kLeaf) e = index[leader[e & ~IrregularGridData::kLeaf]] | IrregularGridData::kLeaf;
+      }
+    });
+  };
+  renumber(data.top);
+  renumber(data.map);
   cells = std::move(out);
   return true;
 }

@@ -128,7 +128,7 @@ std::string param_name(const ::testing::TestParamInfo<Param>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Accel, AccelVsBrute,
-                         ::testing::Combine(::testing::Values("bvh", "bvh2", "grid", "octree"),
+                         ::testing::Combine(::testing::Values("bvh", "bvh2", "grid", "octree", "irregular"),
                                             ::testing::Values(WrapMode::kNone, WrapMode::kBox, WrapMode::kSphere)),
                          param_name);
 

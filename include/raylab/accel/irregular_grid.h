@@ -29,8 +29,9 @@ namespace raylab {
 /// (measured: docs/accelerators.md, "Irregular grid").
 struct IrregularGridConfig {
   float top_density = 0.125f;  ///< λ1: top cells per primitive (`--irregular-top-density`)
-  float sub_density = 2.f;     ///< λ2: cells per reference of a top cell (`--irregular-sub-density`)
-  int max_shift = 3;           ///< most subdivision levels per top cell, 2^s cells per axis; [0, 6]
+  float sub_density = 2.f;     ///< λ2: cells per reference when a cell is subdivided (`--irregular-sub-density`)
+  int max_shift = 3;           ///< most levels one subdivision step takes, 2^s cells per axis; [1, 6]
+  int max_depth = 16;          ///< most levels below a top cell in all; [0, 16], also capped by the 16-bit lattice
   float step_cost = 1.f;       ///< C_step of the merge cost model (per cell crossed)
   float prim_cost = 1.f;       ///< C_prim of the merge cost model (per primitive tested)
   int merge_rounds = 4;        ///< most rounds of x, y, z merge passes (0: no merging)
@@ -42,9 +43,9 @@ struct IrregularGridConfig {
 /// in lattice coordinates, lo inclusive, hi exclusive) and its first reference; its last one is
 /// the next cell's first.
 struct IrregularCell {
-  std::uint16_t lo[3];   ///< expanded box, low lattice corner
-  std::uint16_t hi[3];   ///< expanded box, high lattice corner (exclusive)
-  std::uint32_t first;   ///< index of its first reference
+  std::uint16_t lo[3];  ///< expanded box, low lattice corner
+  std::uint16_t hi[3];  ///< expanded box, high lattice corner (exclusive)
+  std::uint32_t first;  ///< index of its first reference
 };
 static_assert(sizeof(IrregularCell) == 16, "IrregularCell must stay 16 bytes");
 
@@ -52,47 +53,62 @@ static_assert(sizeof(IrregularCell) == 16, "IrregularCell must stay 16 bytes");
 inline constexpr int kIrregularMaxLattice = 65535;
 
 /// The irregular grid as plain data, produced by build_irregular_grid and walked by IrregularGrid.
+///
+/// The lookup map is a shallow tree over the lattice: one entry per top cell, and per subdivided
+/// cell a block of 2^s x 2^s x 2^s entries (x fastest). An entry with kLeaf set holds a cell
+/// index; any other entry is the index of a node, which says where its block starts and its s.
 struct IrregularGridData {
-  /// The lookup map's entry for one top cell: its 2^shift cells per axis are listed at
-  /// sub[begin ...], x fastest.
-  struct TopEntry {
-    std::uint32_t begin;  ///< first entry in `sub`
-    std::uint32_t shift;  ///< subdivision level s of this top cell
+  /// Marks a map entry that is a cell index.
+  static constexpr std::uint32_t kLeaf = 0x80000000u;
+  /// A subdivided cell of the lookup map.
+  struct Node {
+    std::uint32_t begin;  ///< first entry of its block in `map`
+    std::uint32_t shift;  ///< s: its block has 2^s entries per axis
   };
 
-  std::vector<std::uint32_t> ids;            ///< primitives (or groups), ascending; references point here
-  std::vector<IrregularCell> cells;          ///< the cells, plus one sentinel holding the reference count
-  std::vector<std::uint32_t> refs;           ///< positions in `ids`, cell by cell, ascending in each cell
-  std::vector<TopEntry> top;                 ///< one entry per top cell, x fastest
-  std::vector<std::uint32_t> sub;            ///< cell index of every virtual cell of every top cell
-  std::array<std::vector<float>, 3> planes;  ///< lattice planes per axis (lattice[a] + 1 of them)
-  /// Each cell's own box (lattice coordinates, before expansion): the cells tile the lattice.
-  /// Kept by the builder for tests and tools; the accelerator drops it.
+  std::vector<std::uint32_t> ids;    ///< primitives (or groups), ascending; references point here
+  std::vector<IrregularCell> cells;  ///< the cells, plus one sentinel holding the reference count
+  std::vector<std::uint32_t> refs;   ///< positions in `ids`, cell by cell, ascending in each cell
+  std::vector<std::uint32_t> top;    ///< one map entry per top cell, x fastest
+  std::vector<Node> nodes;           ///< the subdivided cells of the map
+  std::vector<std::uint32_t> map;    ///< the blocks of map entries
+  /// Each cell's own box (lattice lo x, y, z, hi x, y, z; before expansion): the cells tile the
+  /// lattice. Kept by the builder for tests and tools; the accelerator drops it.
   std::vector<std::array<std::uint16_t, 6>> boxes;
-  Box3 bounds;                            ///< exact bounds of the primitives
-  std::array<int, 3> top_res{1, 1, 1};    ///< top cells per axis
-  std::array<int, 3> lattice{1, 1, 1};    ///< lattice steps per axis: top_res << max_shift
-  int max_shift = 0;                      ///< subdivision levels of the finest top cell
-  Vec3 inv_step{0.f, 0.f, 0.f};           ///< lattice steps per unit length (0 on a flat axis)
-  std::size_t nonempty_cells = 0;         ///< cells holding references
+  Box3 bounds;                          ///< exact bounds of the primitives
+  Vec3 origin{0.f, 0.f, 0.f};           ///< lattice plane 0 per axis (bounds.lo)
+  Vec3 step{0.f, 0.f, 0.f};             ///< lattice step per axis (rounded up: plane(lattice) >= bounds.hi)
+  Vec3 inv_step{0.f, 0.f, 0.f};         ///< lattice steps per unit length (0 on a flat axis)
+  std::array<int, 3> top_res{1, 1, 1};  ///< top cells per axis
+  std::array<int, 3> lattice{1, 1, 1};  ///< lattice steps per axis: top_res << depth
+  int depth = 0;                        ///< lattice levels below a top cell
+  std::size_t nonempty_cells = 0;       ///< cells holding references
 
   /// Number of cells (without the sentinel).
   std::size_t cell_count() const { return cells.empty() ? 0 : cells.size() - 1; }
 
+  /// Lattice plane k along `axis`. The build's cell boxes and the walk's exits both come from
+  /// here, so they agree bit for bit (the build has no FMA contraction).
+  float plane(int axis, int k) const { return origin[axis] + float(k) * step[axis]; }
+
   /// The cell holding lattice voxel (x, y, z) (each coordinate below lattice[axis]): one load
-  /// for the top cell, one for the cell.
+  /// for the top cell, two more per level of subdivision.
   std::uint32_t cell_at(std::uint32_t x, std::uint32_t y, std::uint32_t z) const {
-    const std::uint32_t s = static_cast<std::uint32_t>(max_shift);
-    const TopEntry e = top[(x >> s) + std::size_t(top_res[0]) * ((y >> s) + std::size_t(top_res[1]) * (z >> s))];
-    const std::uint32_t down = s - e.shift, mask = (1u << e.shift) - 1u;
-    return sub[e.begin + ((x >> down) & mask) + (((y >> down) & mask) << e.shift) +
-               (((z >> down) & mask) << (2 * e.shift))];
+    std::uint32_t level = static_cast<std::uint32_t>(depth);
+    std::uint32_t entry = top[(x >> level) + std::size_t(top_res[0]) * ((y >> level) + std::size_t(top_res[1]) * (z >> level))];
+    while (!(entry & kLeaf)) {
+      const Node n = nodes[entry];
+      level -= n.shift;
+      const std::uint32_t mask = (1u << n.shift) - 1u;
+      entry = map[n.begin + ((x >> level) & mask) + (((y >> level) & mask) << n.shift) +
+                  (((z >> level) & mask) << (2 * n.shift))];
+    }
+    return entry & ~kLeaf;
   }
 
   /// The world box of lattice box [lo, hi).
   Box3 lattice_box(const std::uint16_t lo[3], const std::uint16_t hi[3]) const {
-    return {{planes[0][lo[0]], planes[1][lo[1]], planes[2][lo[2]]},
-            {planes[0][hi[0]], planes[1][hi[1]], planes[2][hi[2]]}};
+    return {{plane(0, lo[0]), plane(1, lo[1]), plane(2, lo[2])}, {plane(0, hi[0]), plane(1, hi[1]), plane(2, hi[2])}};
   }
 };
 
@@ -106,8 +122,8 @@ class Mailboxes;
 
 /// The irregular grid accelerator ("irregular").
 ///
-/// Memory: 16 bytes per cell, 4 per reference, 4 per primitive (the id list), 4 per virtual
-/// cell of the lookup map and 8 per top cell, and the lattice planes; reported by info().
+/// Memory: 16 bytes per cell, 4 per reference, 4 per primitive (the id list), 4 per entry of the
+/// lookup map and 8 per node; reported by info().
 /// Counted queries report as nodes_visited the cells visited (one lookup each) and as prim_tests
 /// the primitive tests run.
 class IrregularGrid final : public TraversalAccelerator<IrregularGrid>, public CellWalk {
