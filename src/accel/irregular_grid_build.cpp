@@ -35,16 +35,22 @@ void check_config(const IrregularGridConfig& c) {
   }
 }
 
-// Below the top level, a cell holding this many references or fewer is not subdivided: a
-// vertex shared by a handful of triangles would otherwise be split down to the last level.
-constexpr std::size_t kSplitMinRefs = 4;
+// Top cells are cut into 2^s cells per axis by the count rule (the paper's second level). Cells
+// of that level that still hold many references are halved again and again, like octree cells
+// (2 x 2 x 2), as long as it pays: this is what reaches down to a small dense object in a big
+// scene. Halving is kept for the deeper levels because the cut at a mesh vertex, where many
+// triangles meet, never stops paying by the test count alone, and each level of 2^s cells per
+// axis around it would add 8^s cells; halves add 8.
 
-// Below the top level, a subdivision into m^3 children is kept only when the children together
-// hold fewer than this times m^2 times the parent's references. A ray through the parent meets a
-// given child with probability about 1/m^2 (the child's share of the parent's cross-section), so
-// the split is expected to cost it sum(children) / m^2 tests instead of the parent's n: it must
-// save at least a quarter. The octree's rule (kOctreeSplitGainRatio), for any m.
-constexpr double kSplitGain = 0.75;
+// A cell holding this many references or fewer is not halved (the octree's K: a mesh vertex is
+// shared by about six triangles).
+constexpr std::size_t kSplitMinRefs = 8;
+
+// A halving is kept only when the eight halves together hold fewer than this many times the
+// parent's references. A ray through the parent meets a given half with probability about 1/4,
+// so the split is expected to leave it sum(halves) / 4 tests instead of n: with fewer than 3n
+// references in all, at most 3/4 of them. The octree's rule (kOctreeSplitGainRatio).
+constexpr double kSplitGainRatio = 3.0;
 
 // One top cell's share of the virtual grid, built on its own thread and spliced in afterwards.
 struct Local {
@@ -66,17 +72,18 @@ class Subdivider {
   std::uint32_t build(const int lo[3], int level, std::vector<std::uint32_t> refs, bool top, Local& out) const {
     const std::size_t n = refs.size();
     int s = 0;
-    if (n > 0 && (top || n > kSplitMinRefs)) {
+    if (top && n > 0) {
       const double want = std::round(std::log2(double(m_config.sub_density) * double(n)) / 3.0);
       s = static_cast<int>(std::clamp(want, 0.0, double(std::min(m_config.max_shift, level))));
+    } else if (!top && n > kSplitMinRefs && level > 0) {
+      s = 1;
     }
     std::vector<std::vector<std::uint32_t>> children;
     if (s > 0) {
       children = split(lo, level, s, refs);
       std::size_t total = 0;
       for (const auto& c : children) total += c.size();
-      const double m = double(1 << s);
-      if (!top && double(total) >= kSplitGain * m * m * double(n)) s = 0;  // no gain: a leaf
+      if (!top && double(total) >= kSplitGainRatio * double(n)) s = 0;  // no gain: a leaf
     }
     if (s == 0) {
       const int size = 1 << level;

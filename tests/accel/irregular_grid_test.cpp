@@ -47,7 +47,7 @@ const std::vector<NamedConfig> kConfigs = {
     {"two levels", with([](IrregularGridConfig& c) { c.max_depth = 3; })},
     {"fine", with([](IrregularGridConfig& c) { c.top_density = 1.f, c.sub_density = 8.f, c.max_shift = 6; })},
     {"costly tests", with([](IrregularGridConfig& c) { c.prim_cost = 100.f, c.expand_rounds = 8; })},
-    {"mailbox", with([](IrregularGridConfig& c) { c.mailbox = true; })},
+    {"no mailbox", with([](IrregularGridConfig& c) { c.mailbox = false; })},
 };
 
 // Checks every query of `grid` against brute force on `rays`; returns the total work.
@@ -108,7 +108,7 @@ TEST_P(IrregularGridVsBrute, EveryConfiguration) {
     EXPECT_EQ(grid.bounds().lo, g.bounds().lo);
     EXPECT_EQ(grid.bounds().hi, g.bounds().hi);
     const TraversalStats st = check(g, grid, rays, std::string(scene.name) + " " + c.name);
-    if (c.config.max_depth > 0 && !c.config.mailbox) {  // a real grid tests far fewer than all
+    if (c.config.max_depth > 0) {  // a real grid tests far fewer than all
       EXPECT_LT(st.prim_tests * 4, std::uint64_t(g.size()) * rays.size()) << c.name;
     }
   }
@@ -196,7 +196,7 @@ TEST(IrregularGridBuild, CellsTileTheLatticeAndHoldEveryTouchingPrimitive) {
   for (int scene : {0, 1, 4, 5}) {
     Sampler s(kScenes[scene].seed + 400);
     const Geometry g = kScenes[scene].make(s);
-    for (const NamedConfig& c : kConfigs) {
+    for (const NamedConfig& c : {kConfigs[0], kConfigs[1], kConfigs[2], kConfigs[4]}) {
       check_invariants(g, build_irregular_grid(g, g.primitive_ids(), c.config),
                        std::string(kScenes[scene].name) + " " + c.name);
     }

@@ -36,7 +36,7 @@ struct IrregularGridConfig {
   float prim_cost = 1.f;       ///< C_prim of the merge cost model (per primitive tested)
   int merge_rounds = 4;        ///< most rounds of x, y, z merge passes (0: no merging)
   int expand_rounds = 3;       ///< rounds over the six faces when expanding exits (0: none)
-  bool mailbox = false;        ///< test a primitive spanning several cells once per ray
+  bool mailbox = true;         ///< test a primitive spanning several cells once per ray
 };
 
 /// One cell of the finished grid, 16 bytes: the box the ray leaves it through (its expanded box,
