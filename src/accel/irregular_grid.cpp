@@ -57,9 +57,11 @@ IrregularGrid::~IrregularGrid() = default;
 template <bool kAnyHit, bool kCount>
 bool IrregularGrid::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   if (m_mailboxes) {
-    return walk<kAnyHit, kCount>(ray, hit, stats, [&] { return m_mailboxes->begin_ray(); }, NoVisit{});
+    return walk<kAnyHit, kCount>(
+        ray, hit, stats, [&] { return m_mailboxes->begin_ray(); }, NoVisit{});
   }
-  return walk<kAnyHit, kCount>(ray, hit, stats, [] { return TestEverySlot{}; }, NoVisit{});
+  return walk<kAnyHit, kCount>(
+      ray, hit, stats, [] { return TestEverySlot{}; }, NoVisit{});
 }
 
 template <bool kAnyHit, bool kCount, class MakeMailbox, class Visit>
@@ -112,9 +114,8 @@ bool IrregularGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, MakeMailbox 
     const std::uint32_t end = cells[c + 1].first;
     if constexpr (kCount) ++counters.nodes_visited;
     visit(cell, cell.first != end);
-    if (cell.first != end &&
-        intersect_references<kAnyHit, kCount>(prims, cell.first, end, slots, mailbox, wr, ray, tmin, tmax, best,
-                                              counters)) {
+    if (cell.first != end && intersect_references<kAnyHit, kCount>(prims, cell.first, end, slots, mailbox, wr, ray,
+                                                                   tmin, tmax, best, counters)) {
       found = true;
       if constexpr (kAnyHit) break;
     }
@@ -151,9 +152,11 @@ std::vector<WalkedCell> IrregularGrid::cells_on_ray(const Ray& ray) const {
     out.push_back({m_data.lattice_box(cell.lo, cell.hi), has_primitives});
   };
   if (m_mailboxes) {
-    walk<false, false>(probe, scratch, nullptr, [&] { return m_mailboxes->begin_ray(); }, record);
+    walk<false, false>(
+        probe, scratch, nullptr, [&] { return m_mailboxes->begin_ray(); }, record);
   } else {
-    walk<false, false>(probe, scratch, nullptr, [] { return TestEverySlot{}; }, record);
+    walk<false, false>(
+        probe, scratch, nullptr, [] { return TestEverySlot{}; }, record);
   }
   return out;
 }
@@ -162,9 +165,10 @@ AccelInfo IrregularGrid::info() const {
   AccelInfo info;
   info.name = "irregular";
   info.build_seconds = m_build_seconds;
-  info.memory_bytes = sizeof(*this) + m_data.cells.size() * sizeof(IrregularCell) +
-                      (m_data.refs.size() + m_data.ids.size() + m_data.top.size() + m_data.map.size()) * sizeof(std::uint32_t) +
-                      m_data.nodes.size() * sizeof(IrregularGridData::Node);
+  info.memory_bytes =
+      sizeof(*this) + m_data.cells.size() * sizeof(IrregularCell) +
+      (m_data.refs.size() + m_data.ids.size() + m_data.top.size() + m_data.map.size()) * sizeof(std::uint32_t) +
+      m_data.nodes.size() * sizeof(IrregularGridData::Node);
   info.node_count = m_data.cell_count();
   info.leaf_count = m_data.nonempty_cells;
   info.primitive_count = m_data.ids.size();

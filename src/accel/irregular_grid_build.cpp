@@ -23,8 +23,8 @@ namespace {
 void check_config(const IrregularGridConfig& c) {
   auto positive = [](float x) { return x > 0.f && std::isfinite(x); };
   if (!positive(c.top_density) || !positive(c.sub_density)) {
-    throw UsageError("irregular grid densities must be positive numbers (got " + std::to_string(c.top_density) +
-                     ", " + std::to_string(c.sub_density) + ")");
+    throw UsageError("irregular grid densities must be positive numbers (got " + std::to_string(c.top_density) + ", " +
+                     std::to_string(c.sub_density) + ")");
   }
   if (!(c.step_cost >= 0.f) || !(c.prim_cost >= 0.f) || !std::isfinite(c.step_cost + c.prim_cost)) {
     throw UsageError("irregular grid cost constants must be finite and >= 0");
@@ -211,9 +211,9 @@ IrregularBuildCells build_virtual_grid(const Geometry& geometry, IrregularGridDa
       for (int y = r[1].first; y <= r[1].last; ++y) {
         for (int x = r[0].first; x <= r[0].last; ++x) {
           if (!single) {
-            const Box3 cell{{top_planes[0][x] - margin.x, top_planes[1][y] - margin.y, top_planes[2][z] - margin.z},
-                            {top_planes[0][x + 1] + margin.x, top_planes[1][y + 1] + margin.y,
-                             top_planes[2][z + 1] + margin.z}};
+            const Box3 cell{
+                {top_planes[0][x] - margin.x, top_planes[1][y] - margin.y, top_planes[2][z] - margin.z},
+                {top_planes[0][x + 1] + margin.x, top_planes[1][y + 1] + margin.y, top_planes[2][z + 1] + margin.z}};
             if (!overlaps_box(geometry, id, cell)) continue;
           }
           visit(x + nx * y + nxy * z);
@@ -275,9 +275,9 @@ IrregularBuildCells build_virtual_grid(const Geometry& geometry, IrregularGridDa
   tbb::parallel_for(std::size_t{0}, top_cells, [&](std::size_t t) {
     const Local& l = locals[t];
     auto relocate = [&](std::uint32_t e) {
-      return (e & IrregularGridData::kLeaf) ? std::uint32_t((e & ~IrregularGridData::kLeaf) + cell_off[t]) |
-                                                  IrregularGridData::kLeaf
-                                            : std::uint32_t(e + node_off[t]);
+      return (e & IrregularGridData::kLeaf)
+                 ? std::uint32_t((e & ~IrregularGridData::kLeaf) + cell_off[t]) | IrregularGridData::kLeaf
+                 : std::uint32_t(e + node_off[t]);
     };
     data.top[t] = relocate(data.top[t]);
     for (std::size_t i = 0; i < l.map.size(); ++i) data.map[map_off[t] + i] = relocate(l.map[i]);

@@ -174,8 +174,8 @@ void check_invariants(const Geometry& g, const IrregularGridData& d, const std::
     for (std::uint32_t slot = 0; slot < d.ids.size(); ++slot) {
       if (g.resolve(d.ids[slot]).kind == ShapeKind::kCylinder) continue;
       const Box3 pb = g.bounds(d.ids[slot]);
-      const bool near_box = pb.lo.x <= box.hi.x && box.lo.x <= pb.hi.x && pb.lo.y <= box.hi.y &&
-                            box.lo.y <= pb.hi.y && pb.lo.z <= box.hi.z && box.lo.z <= pb.hi.z;
+      const bool near_box = pb.lo.x <= box.hi.x && box.lo.x <= pb.hi.x && pb.lo.y <= box.hi.y && box.lo.y <= pb.hi.y &&
+                            pb.lo.z <= box.hi.z && box.lo.z <= pb.hi.z;
       if (!near_box || !overlaps_box(g, d.ids[slot], box)) continue;
       EXPECT_TRUE(std::binary_search(mine.begin(), mine.end(), slot)) << "cell " << c << " lacks slot " << slot;
     }
@@ -249,13 +249,11 @@ TEST(IrregularGridBuild, SubdivisionFollowsTheCountsAndTheCap) {
 
 TEST(IrregularGridBuild, RejectsInvalidParameters) {
   const Geometry g;
-  for (auto change : {+[](IrregularGridConfig& c) { c.top_density = 0.f; },
-                      +[](IrregularGridConfig& c) { c.sub_density = -1.f; },
-                      +[](IrregularGridConfig& c) { c.max_shift = 7; },
-                      +[](IrregularGridConfig& c) { c.max_shift = 0; },
-                      +[](IrregularGridConfig& c) { c.max_depth = 17; },
-                      +[](IrregularGridConfig& c) { c.prim_cost = std::nanf(""); },
-                      +[](IrregularGridConfig& c) { c.merge_rounds = -1; }}) {
+  for (auto change :
+       {+[](IrregularGridConfig& c) { c.top_density = 0.f; }, +[](IrregularGridConfig& c) { c.sub_density = -1.f; },
+        +[](IrregularGridConfig& c) { c.max_shift = 7; }, +[](IrregularGridConfig& c) { c.max_shift = 0; },
+        +[](IrregularGridConfig& c) { c.max_depth = 17; }, +[](IrregularGridConfig& c) { c.prim_cost = std::nanf(""); },
+        +[](IrregularGridConfig& c) { c.merge_rounds = -1; }}) {
     EXPECT_THROW(IrregularGrid(g, with(change)), UsageError);
   }
 }
@@ -448,8 +446,9 @@ TEST(IrregularGrid, InfoDescribesTheGrid) {
   EXPECT_EQ(info.leaf_count, d.nonempty_cells);
   EXPECT_GT(info.leaf_count, 0u);
   EXPECT_LT(info.leaf_count, info.node_count);
-  EXPECT_GE(info.memory_bytes, d.cells.size() * sizeof(IrregularCell) +
-                                   (d.refs.size() + d.ids.size() + d.top.size() + d.map.size()) * sizeof(std::uint32_t));
+  EXPECT_GE(info.memory_bytes,
+            d.cells.size() * sizeof(IrregularCell) +
+                (d.refs.size() + d.ids.size() + d.top.size() + d.map.size()) * sizeof(std::uint32_t));
   EXPECT_TRUE(d.boxes.empty()) << "the accelerator keeps only the expanded boxes";
   EXPECT_GE(info.build_seconds, 0.0);
 }

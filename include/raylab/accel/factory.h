@@ -20,9 +20,9 @@ namespace raylab {
 
 /// Parameters for every structure the factory can make; each reads only its own part.
 struct AccelConfig {
-  BvhConfig bvh;        ///< used by "bvh" (4-wide) and "bvh2" (binary)
-  GridConfig grid;      ///< used by "grid"
-  OctreeConfig octree;  ///< used by "octree"
+  BvhConfig bvh;                  ///< used by "bvh" (4-wide) and "bvh2" (binary)
+  GridConfig grid;                ///< used by "grid"
+  OctreeConfig octree;            ///< used by "octree"
   IrregularGridConfig irregular;  ///< used by "irregular"
 };
 

@@ -95,7 +95,8 @@ struct IrregularGridData {
   /// for the top cell, two more per level of subdivision.
   std::uint32_t cell_at(std::uint32_t x, std::uint32_t y, std::uint32_t z) const {
     std::uint32_t level = static_cast<std::uint32_t>(depth);
-    std::uint32_t entry = top[(x >> level) + std::size_t(top_res[0]) * ((y >> level) + std::size_t(top_res[1]) * (z >> level))];
+    std::uint32_t entry =
+        top[(x >> level) + std::size_t(top_res[0]) * ((y >> level) + std::size_t(top_res[1]) * (z >> level))];
     while (!(entry & kLeaf)) {
       const Node n = nodes[entry];
       level -= n.shift;
