@@ -46,6 +46,25 @@ IrregularGrid::IrregularGrid(const Geometry& geometry, std::span<const std::uint
   m_data = build_irregular_grid(geometry, ids, config);
   // The cells' own boxes are for tests of the builder; the walk needs only the expanded ones.
   m_data.boxes = {};
+  // Copies of the triangles and spheres in the grid's spatial order: a cell's references then
+  // point to neighbouring entries instead of all over the scene (on the armadillo, whose
+  // triangles are stored in no spatial order, testing them in place cost most of the time).
+  m_triangle_count = static_cast<std::uint32_t>(geometry.triangles.size());
+  m_sphere_end = m_triangle_count + static_cast<std::uint32_t>(geometry.spheres.size());
+  const auto& ids_in_order = m_data.ids;
+  const bool any_triangle =
+      std::any_of(ids_in_order.begin(), ids_in_order.end(), [&](std::uint32_t id) { return id < m_triangle_count; });
+  const bool any_sphere = std::any_of(ids_in_order.begin(), ids_in_order.end(),
+                                      [&](std::uint32_t id) { return id >= m_triangle_count && id < m_sphere_end; });
+  m_triangles.assign(any_triangle ? ids_in_order.size() : 0, Triangle{});
+  m_spheres.assign(any_sphere ? ids_in_order.size() : 0, Sphere{});
+  for (std::size_t i = 0; i < ids_in_order.size(); ++i) {
+    const std::uint32_t id = ids_in_order[i];
+    if (id < m_triangle_count)
+      m_triangles[i] = geometry.triangles[id];
+    else if (id < m_sphere_end)
+      m_spheres[i] = geometry.spheres[id - m_triangle_count];
+  }
   if (config.mailbox && !m_data.ids.empty()) {
     m_mailboxes = std::make_unique<Mailboxes>(static_cast<std::uint32_t>(m_data.ids.size()));
   }
@@ -102,7 +121,8 @@ bool IrregularGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, MakeMailbox 
   const IrregularCell* const cells = g.cells.data();
   auto mailbox = make_mailbox();
   const WatertightRay wr(ray);
-  const GeometryPrimitives prims(g.ids.data(), m_geometry);
+  const SlotPrimitives prims{g.ids.data(),     m_triangles.data(), m_spheres.data(),
+                             m_triangle_count, m_sphere_end,       &m_geometry};
   const SlotFromList slots{g.refs.data()};
   const float tmin = ray.tmin;
   float tmax = ray.tmax;
@@ -168,7 +188,8 @@ AccelInfo IrregularGrid::info() const {
   info.memory_bytes =
       sizeof(*this) + m_data.cells.size() * sizeof(IrregularCell) +
       (m_data.refs.size() + m_data.ids.size() + m_data.top.size() + m_data.map.size()) * sizeof(std::uint32_t) +
-      m_data.nodes.size() * sizeof(IrregularGridData::Node);
+      m_data.nodes.size() * sizeof(IrregularGridData::Node) + m_triangles.size() * sizeof(Triangle) +
+      m_spheres.size() * sizeof(Sphere);
   info.node_count = m_data.cell_count();
   info.leaf_count = m_data.nonempty_cells;
   info.primitive_count = m_data.ids.size();

@@ -7,9 +7,11 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include "grid_insert.h"
 #include "irregular_grid_build.h"
@@ -72,18 +74,19 @@ class Subdivider {
   std::uint32_t build(const int lo[3], int level, std::vector<std::uint32_t> refs, bool top, Local& out) const {
     const std::size_t n = refs.size();
     int s = 0;
-    if (top && n > 0) {
+    if (n > 0 && (top || n > kSplitMinRefs)) {
       const double want = std::round(std::log2(double(m_config.sub_density) * double(n)) / 3.0);
       s = static_cast<int>(std::clamp(want, 0.0, double(std::min(m_config.max_shift, level))));
-    } else if (!top && n > kSplitMinRefs && level > 0) {
-      s = 1;
     }
     std::vector<std::vector<std::uint32_t>> children;
-    if (s > 0) {
+    while (s > 0) {
       children = split(lo, level, s, refs);
       std::size_t total = 0;
       for (const auto& c : children) total += c.size();
-      if (!top && double(total) >= kSplitGainRatio * double(n)) s = 0;  // no gain: a leaf
+      if (top || double(total) < kSplitGainRatio * double(n)) break;
+      // No gain: primitives this big for the children (a fan around a vertex) are halved at
+      // most, and left alone when even that does not pay.
+      s = s > 1 ? 1 : 0;
     }
     if (s == 0) {
       const int size = 1 << level;
@@ -151,6 +154,34 @@ class Subdivider {
   const IrregularGridConfig& m_config;
   Vec3 m_margin;
 };
+
+// Puts data.ids in Morton order of the primitives' box centres (10 bits per axis over the scene
+// box), ties by id, so that the result does not depend on the order the ids came in.
+void order_spatially(const Geometry& geometry, IrregularGridData& data) {
+  const Vec3 lo = data.bounds.lo, extent = data.bounds.extent();
+  auto spread = [](std::uint64_t v) {  // the 10 bits of v to every third bit
+    v = (v | (v << 16)) & 0x030000FFull;
+    v = (v | (v << 8)) & 0x0300F00Full;
+    v = (v | (v << 4)) & 0x030C30C3ull;
+    v = (v | (v << 2)) & 0x09249249ull;
+    return v;
+  };
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(data.ids.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, keyed.size(), 1024), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      const Vec3 c = geometry.bounds(data.ids[i]).center();
+      std::uint64_t key = 0;
+      for (int a = 0; a < 3; ++a) {
+        const float f = extent[a] > 0.f ? (c[a] - lo[a]) / extent[a] * 1023.f : 0.f;
+        const auto q = static_cast<std::uint64_t>(f >= 0.f ? std::min(f, 1023.f) : 0.f);  // NaN -> 0
+        key |= spread(q) << a;
+      }
+      keyed[i] = {key, data.ids[i]};
+    }
+  });
+  tbb::parallel_sort(keyed.begin(), keyed.end());
+  for (std::size_t i = 0; i < keyed.size(); ++i) data.ids[i] = keyed[i].second;
+}
 
 }  // namespace
 
@@ -301,12 +332,9 @@ IrregularGridData build_irregular_grid(const Geometry& geometry, std::span<const
   check_config(config);
   IrregularGridData data;
   data.ids.assign(ids.begin(), ids.end());
-  // Ascending, so references (positions here) order the primitives by id in every cell: the
-  // result does not depend on the order `ids` came in, and any-hit queries meet a cell's
-  // primitives in id order, as brute force does.
-  std::sort(data.ids.begin(), data.ids.end());
   for (std::uint32_t id : data.ids) data.bounds.extend(geometry.bounds(id));
   if (data.ids.empty() || data.bounds.empty()) return data;  // no cells: every ray misses
+  order_spatially(geometry, data);
 
   IrregularBuildCells cells = build_virtual_grid(geometry, data, config);
   merge_cells(cells, data, config);

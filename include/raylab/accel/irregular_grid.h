@@ -66,7 +66,10 @@ struct IrregularGridData {
     std::uint32_t shift;  ///< s: its block has 2^s entries per axis
   };
 
-  std::vector<std::uint32_t> ids;    ///< primitives (or groups), ascending; references point here
+  /// The primitives (or groups) in spatial order (Morton order of their box centres, ties by
+  /// id); references point here, and the accelerator's copies of the triangles and spheres
+  /// follow the same order, so the primitives of one cell lie together in memory.
+  std::vector<std::uint32_t> ids;
   std::vector<IrregularCell> cells;  ///< the cells, plus one sentinel holding the reference count
   std::vector<std::uint32_t> refs;   ///< positions in `ids`, cell by cell, ascending in each cell
   std::vector<std::uint32_t> top;    ///< one map entry per top cell, x fastest
@@ -124,7 +127,8 @@ class Mailboxes;
 /// The irregular grid accelerator ("irregular").
 ///
 /// Memory: 16 bytes per cell, 4 per reference, 4 per primitive (the id list), 4 per entry of the
-/// lookup map and 8 per node; reported by info().
+/// lookup map and 8 per node, and copies of the triangles and spheres in the grid's spatial
+/// order (where the scene has any); reported by info().
 /// Counted queries report as nodes_visited the cells visited (one lookup each) and as prim_tests
 /// the primitive tests run.
 class IrregularGrid final : public TraversalAccelerator<IrregularGrid>, public CellWalk {
@@ -156,6 +160,10 @@ class IrregularGrid final : public TraversalAccelerator<IrregularGrid>, public C
   const Geometry& m_geometry;
   IrregularGridConfig m_config;
   IrregularGridData m_data;
+  std::vector<Triangle> m_triangles;   ///< parallel to m_data.ids where they are triangles (else unused)
+  std::vector<Sphere> m_spheres;       ///< parallel to m_data.ids where they are spheres (else unused)
+  std::uint32_t m_triangle_count = 0;  ///< global ids below this are triangles
+  std::uint32_t m_sphere_end = 0;      ///< global ids in [m_triangle_count, this) are spheres
   double m_build_seconds = 0.0;
   std::unique_ptr<Mailboxes> m_mailboxes;  ///< null when mailboxing is off
 };
