@@ -5,12 +5,13 @@
 ///
 /// The build (irregular_grid_build*.cpp) works on a virtual lattice over the scene box: a coarse
 /// top grid (density rule, grid_resolution) whose cells are each cut into 2^s cells per axis,
-/// s chosen from the cell's own primitive count, so every cell is a box of integer coordinates
-/// of the finest lattice. Neighbouring cells then merge where a cost model says the merged cell
-/// is cheaper to cross, and every cell's exit box is expanded over the neighbours whose
-/// primitives it already lists. The traversal (irregular_grid.cpp) looks a point up in one or
-/// two loads, tests the cell's primitives and jumps to the point where the ray leaves the
-/// expanded box: few, long steps.
+/// s chosen from the cell's own primitive count, and dense cells cut again while it pays, so
+/// every cell is a box of integer coordinates of the finest lattice. Neighbouring cells then
+/// merge where a cost model says the merged cell is cheaper to cross, and every cell's exit box
+/// is expanded over the neighbours whose primitives it already lists. The traversal
+/// (irregular_grid.cpp) looks a point up (one load, then two per level of subdivision), tests
+/// the cell's primitives and jumps to the point where the ray leaves the expanded box: few, long
+/// steps.
 
 #include <array>
 #include <cstddef>
