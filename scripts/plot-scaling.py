@@ -15,7 +15,7 @@ import sys
 from collections import defaultdict
 
 COLOURS = {"brute": "#888888", "grid": "#1f77b4", "grid2": "#17becf", "octree": "#2ca02c", "bvh": "#d62728",
-           "bvh2": "#ff7f0e", "embree": "#9467bd"}
+           "bvh2": "#ff7f0e", "embree": "#9467bd", "irregular": "#8c564b"}
 
 
 def load(paths):

@@ -24,6 +24,39 @@ void add_accel_parameter_options(CLI::App& cmd, AccelArgs& args) {
   cmd.add_option("--octree-max-depth", o.config.octree.max_depth, "Octree: deepest level of subdivision (L)")
       ->check(CLI::Range(0, 20))
       ->capture_default_str();
+  IrregularGridConfig& irr = o.config.irregular;
+  cmd.add_option("--irregular-top-density", irr.top_density, "Irregular grid: top cells per primitive (lambda 1)")
+      ->check(CLI::Range(1e-4, 1e3))
+      ->capture_default_str();
+  cmd.add_option("--irregular-sub-density", irr.sub_density,
+                 "Irregular grid: cells per reference when a top cell is subdivided (lambda 2)")
+      ->check(CLI::Range(1e-4, 1e3))
+      ->capture_default_str();
+  cmd.add_option("--irregular-max-shift", irr.max_shift,
+                 "Irregular grid: most levels one subdivision step takes (2^s cells per axis)")
+      ->check(CLI::Range(1, 6))
+      ->capture_default_str();
+  cmd.add_option("--irregular-max-depth", irr.max_depth,
+                 "Irregular grid: most levels of subdivision below a top cell in all (0: the top grid only)")
+      ->check(CLI::Range(0, 16))
+      ->capture_default_str();
+  cmd.add_option("--irregular-step-cost", irr.step_cost, "Irregular grid: merge cost of crossing a cell (C_step)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  cmd.add_option("--irregular-prim-cost", irr.prim_cost, "Irregular grid: merge cost of a primitive test (C_prim)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  cmd.add_option("--irregular-merge-rounds", irr.merge_rounds,
+                 "Irregular grid: most rounds of x, y, z merge passes (0: no merging)")
+      ->check(CLI::Range(0, 64))
+      ->capture_default_str();
+  cmd.add_option("--irregular-expand-rounds", irr.expand_rounds,
+                 "Irregular grid: rounds of growing each cell's exit box over its six faces (0: no expansion)")
+      ->check(CLI::Range(0, 64))
+      ->capture_default_str();
+  cmd.add_option("--irregular-mailbox", irr.mailbox,
+                 "Irregular grid: test a primitive spanning several cells once per ray (true or false)")
+      ->capture_default_str();
   cmd.add_flag("--bvh-spatial-splits", o.config.bvh.spatial_splits,
                "BVH (bvh, bvh2, bvh4, bvh8, bvh16): also consider spatial splits (SBVH): triangles may be clipped "
                "into several leaves; a lower SAH cost for a slower build");

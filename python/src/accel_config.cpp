@@ -49,6 +49,17 @@ Setters setters_of(const std::string& accel) {
             {"max_depth", setter(&AccelConfig::octree, &OctreeConfig::max_depth)},
             {"mailbox", setter(&AccelConfig::octree, &OctreeConfig::mailbox)}};
   }
+  if (accel == "irregular") {
+    return {{"top_density", setter(&AccelConfig::irregular, &IrregularGridConfig::top_density)},
+            {"sub_density", setter(&AccelConfig::irregular, &IrregularGridConfig::sub_density)},
+            {"max_shift", setter(&AccelConfig::irregular, &IrregularGridConfig::max_shift)},
+            {"max_depth", setter(&AccelConfig::irregular, &IrregularGridConfig::max_depth)},
+            {"step_cost", setter(&AccelConfig::irregular, &IrregularGridConfig::step_cost)},
+            {"prim_cost", setter(&AccelConfig::irregular, &IrregularGridConfig::prim_cost)},
+            {"merge_rounds", setter(&AccelConfig::irregular, &IrregularGridConfig::merge_rounds)},
+            {"expand_rounds", setter(&AccelConfig::irregular, &IrregularGridConfig::expand_rounds)},
+            {"mailbox", setter(&AccelConfig::irregular, &IrregularGridConfig::mailbox)}};
+  }
   return {};
 }
 

@@ -291,10 +291,11 @@ Made by :func:`raylab.load` (any scene file, mesh file, built-in scene or SPD ge
           R"(Builds (or rebuilds) the acceleration structure and returns the scene.
 
 ``accel`` is one of :func:`raylab.accelerators` ("bvh", "bvh2", "grid", "grid2", "octree",
-"brute", "embree", ...). Keyword parameters configure it: bin_count, max_leaf_size,
+"irregular", "brute", "embree", ...). Keyword parameters configure it: bin_count, max_leaf_size,
 traversal_cost, intersection_cost, spatial_splits, spatial_split_alpha, spatial_split_budget for
 the BVHs; density and mailbox for "grid"; top_density, leaf_density and mailbox for "grid2";
-max_items, max_depth and mailbox for "octree". An unknown
+max_items, max_depth and mailbox for "octree"; top_density, sub_density, max_shift, max_depth,
+step_cost, prim_cost, merge_rounds, expand_rounds and mailbox for "irregular". An unknown
 name raises ValueError, an unknown parameter TypeError.)",
           py::return_value_policy::reference_internal)
       .def("intersect", &intersect, py::arg("origins"), py::arg("directions") = py::none(), py::kw_only(),

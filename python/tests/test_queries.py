@@ -118,7 +118,7 @@ def test_answers_equal_the_cpp_command_line_on_the_same_rays(tmp_path, binary):
     assert np.isfinite(hits["t"]).sum() > n // 10
 
 
-@pytest.mark.parametrize("accel", ["bvh", "bvh2", "grid", "grid2", "octree", "brute"])
+@pytest.mark.parametrize("accel", ["bvh", "bvh2", "grid", "grid2", "octree", "irregular", "brute"])
 def test_every_structure_gives_the_same_answers(sphere, accel):
     v, f = sphere
     o, d = random_rays(2000, 4)

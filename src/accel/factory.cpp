@@ -12,8 +12,8 @@ namespace {
 
 // "bvh" is the wide BVH at the width this build tests natively (8 with AVX2, 16 with AVX-512);
 // the explicit widths are there to compare them side by side.
-constexpr std::array<std::string_view, 10> kNames = {"bvh",  "bvh2",  "bvh4",   "bvh8",  "bvh16",
-                                                     "grid", "grid2", "octree", "brute", "embree"};
+constexpr std::array<std::string_view, 11> kNames = {"bvh",  "bvh2",  "bvh4",   "bvh8",      "bvh16", "grid",
+                                                     "grid2", "octree", "irregular", "brute", "embree"};
 
 }  // namespace
 
@@ -43,6 +43,7 @@ std::unique_ptr<Accelerator> make_accelerator(std::string_view name, const Geome
   if (name == "grid") return std::make_unique<UniformGrid>(geometry, ids, config.grid);
   if (name == "grid2") return std::make_unique<TwoLevelGrid>(geometry, ids, config.grid2);
   if (name == "octree") return std::make_unique<Octree>(geometry, ids, config.octree);
+  if (name == "irregular") return std::make_unique<IrregularGrid>(geometry, ids, config.irregular);
   if (name == "brute") return std::make_unique<BruteForce>(geometry, ids);
   if (name == "embree" && embree_available()) return make_embree_accelerator(geometry, ids);
   throw UsageError("unknown accelerator '" + std::string(name) + "' (valid: " + accelerator_name_list() + ")");

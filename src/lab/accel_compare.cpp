@@ -249,7 +249,7 @@ bool CompareResult::agreed() const {
 }
 
 std::vector<std::string> default_compare_accels() {
-  std::vector<std::string> names = {"brute", "grid", "grid2", "octree", "bvh"};
+  std::vector<std::string> names = {"brute", "grid", "grid2", "octree", "irregular", "bvh"};
   for (std::string_view n : accelerator_names()) {
     if (n == "embree") names.emplace_back(n);
   }

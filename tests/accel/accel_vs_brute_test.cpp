@@ -128,7 +128,7 @@ std::string param_name(const ::testing::TestParamInfo<Param>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Accel, AccelVsBrute,
-                         ::testing::Combine(::testing::Values("bvh", "bvh2", "grid", "grid2", "octree"),
+                         ::testing::Combine(::testing::Values("bvh", "bvh2", "grid", "grid2", "octree", "irregular"),
                                             ::testing::Values(WrapMode::kNone, WrapMode::kBox, WrapMode::kSphere)),
                          param_name);
 

@@ -85,7 +85,7 @@ struct Exact {
 
   Exact(const Geometry& g, const std::string& name)
       : scale(g.size() == 0 ? 1.f : std::max(max_abs(g.bounds().lo), max_abs(g.bounds().hi))),
-        infinite_gap(name == "grid" || name == "grid2" || name == "octree"),
+        infinite_gap(name == "grid" || name == "grid2" || name == "octree" || name == "irregular"),
         own_ties(name == "embree") {}
 
   bool operator()(const Ray& r) const {

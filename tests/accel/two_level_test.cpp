@@ -66,7 +66,7 @@ TEST(TwoLevel, InstancesSeeTheWorldOfTheirBakedCopies) {
   Sampler s(92);
   const std::vector<Ray> rays = rays_at(baked.geometry, s, 2500);
   const std::vector<Hit> expected = closest_hits(BruteForce(baked.geometry), rays);
-  for (const char* top : {"bvh", "grid", "grid2", "octree"}) {
+  for (const char* top : {"bvh", "grid", "grid2", "octree", "irregular"}) {
     for (WrapMode wrap : {WrapMode::kNone, WrapMode::kBox, WrapMode::kSphere}) {
       const auto accel = make(scene, top, "bvh", wrap);
       int disagreements = 0, hits = 0;
@@ -99,8 +99,8 @@ TEST(TwoLevel, AnyStructureAtEitherLevelGivesTheSameHits) {
   Sampler s(93);
   const std::vector<Ray> rays = rays_at(baked.geometry, s, 1000);
   const std::vector<Hit> expected = closest_hits(*make(scene, "brute", "brute", WrapMode::kNone), rays);
-  for (const char* top : {"bvh", "bvh2", "grid", "grid2", "octree"}) {
-    for (const char* bottom : {"bvh", "grid", "grid2", "octree", "brute"}) {
+  for (const char* top : {"bvh", "bvh2", "grid", "grid2", "octree", "irregular"}) {
+    for (const char* bottom : {"bvh", "grid", "grid2", "octree", "irregular", "brute"}) {
       for (WrapMode wrap : {WrapMode::kNone, WrapMode::kBox, WrapMode::kSphere}) {
         const auto accel = make(scene, top, bottom, wrap);
         int failures = 0;

@@ -38,7 +38,7 @@ TEST_F(Cli, CompareRejectsUnknownStructuresListingTheValidOnes) {
   const CliResult r = run("compare " + kWhitted + " --accels bvh,kdtree --width 8 --height 8");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("kdtree"), std::string::npos) << r.err;
-  for (const char* name : {"bvh2", "brute", "grid", "grid2", "octree"})
+  for (const char* name : {"bvh2", "brute", "grid", "grid2", "octree", "irregular"})
     EXPECT_NE(r.err.find(name), std::string::npos) << r.err;
   const CliResult twice = run("compare " + kWhitted + " --accels bvh,bvh --width 8 --height 8");
   EXPECT_EQ(twice.code, 2);

@@ -244,7 +244,7 @@ TEST(RayQuery, AllHitsOfEveryStructureListTheSameCrossings) {
   RayQuery query = RayQuery::from_triangles(a.vertices, a.indices);
   const std::vector<Ray> rays = random_rays(500, 7);
   const BruteForce brute(query.geometry());
-  for (const char* name : {"bvh", "bvh2", "grid", "grid2", "octree"}) {
+  for (const char* name : {"bvh", "bvh2", "grid", "grid2", "octree", "irregular"}) {
     query.build(name);
     for (const Ray& r : rays) {
       std::vector<Hit> expected, found;

@@ -52,7 +52,7 @@ TEST_P(SpdProtocol, CountsAreTheSameForEveryAcceleratorAtSmallSize) {
   EXPECT_LE(brute.shadow_hits, brute.shadow);
   EXPECT_LE(brute.reflection_hits, brute.reflection);
   EXPECT_LE(brute.refraction_hits, brute.refraction);
-  for (const char* name : {"bvh", "bvh2", "grid", "grid2", "octree"}) {
+  for (const char* name : {"bvh", "bvh2", "grid", "grid2", "octree", "irregular"}) {
     SCOPED_TRACE(name);
     expect_same(protocol_counts(source, name), brute);
   }
@@ -68,7 +68,7 @@ TEST_P(SpdProtocol, CountsAreTheSameForEveryAcceleratorAtSmallSize) {
 TEST_P(SpdProtocol, OutwardFacingCountsAreTheSameForEveryAccelerator) {
   const std::string source = "spd:" + GetParam() + "?size=" + (GetParam() == "teapot" ? "2" : "1");
   const SpdProtocolCounts bvh = protocol_counts(source, "bvh", WrapMode::kNone, ShadowFacing::kOutward);
-  for (const char* name : {"bvh2", "grid", "grid2", "octree"}) {
+  for (const char* name : {"bvh2", "grid", "grid2", "octree", "irregular"}) {
     SCOPED_TRACE(name);
     expect_same(protocol_counts(source, name, WrapMode::kNone, ShadowFacing::kOutward), bvh);
   }
@@ -82,7 +82,7 @@ TEST_P(SpdProtocol, OutwardFacingCountsAreTheSameForEveryAccelerator) {
 TEST_P(SpdProtocol, CountsAreTheSameForEveryAcceleratorAtDefaultSize) {
   const std::string source = "spd:" + GetParam();
   const SpdProtocolCounts bvh = protocol_counts(source, "bvh");
-  for (const char* name : {"bvh2", "grid", "grid2", "octree"}) {
+  for (const char* name : {"bvh2", "grid", "grid2", "octree", "irregular"}) {
     SCOPED_TRACE(name);
     expect_same(protocol_counts(source, name), bvh);
   }

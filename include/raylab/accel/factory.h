@@ -11,6 +11,7 @@
 
 #include "raylab/accel/accelerator.h"
 #include "raylab/accel/bvh.h"
+#include "raylab/accel/irregular_grid.h"
 #include "raylab/accel/octree.h"
 #include "raylab/accel/two_level_grid.h"
 #include "raylab/accel/uniform_grid.h"
@@ -24,6 +25,7 @@ struct AccelConfig {
   GridConfig grid;           ///< used by "grid"
   TwoLevelGridConfig grid2;  ///< used by "grid2"
   OctreeConfig octree;       ///< used by "octree"
+  IrregularGridConfig irregular;  ///< used by "irregular"
 };
 
 /// Names the factory accepts in this build, in the order they are listed to users ("embree"
