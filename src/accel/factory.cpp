@@ -12,7 +12,7 @@ namespace {
 
 // "bvh" is the wide BVH at the width this build tests natively (8 with AVX2, 16 with AVX-512);
 // the explicit widths are there to compare them side by side.
-constexpr std::array<std::string_view, 11> kNames = {"bvh",  "bvh2",  "bvh4",   "bvh8",      "bvh16", "grid",
+constexpr std::array<std::string_view, 11> kNames = {"bvh",   "bvh2",   "bvh4",      "bvh8",  "bvh16", "grid",
                                                      "grid2", "octree", "irregular", "brute", "embree"};
 
 }  // namespace

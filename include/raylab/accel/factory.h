@@ -21,10 +21,10 @@ namespace raylab {
 
 /// Parameters for every structure the factory can make; each reads only its own part.
 struct AccelConfig {
-  BvhConfig bvh;             ///< used by "bvh" (4-wide) and "bvh2" (binary)
-  GridConfig grid;           ///< used by "grid"
-  TwoLevelGridConfig grid2;  ///< used by "grid2"
-  OctreeConfig octree;       ///< used by "octree"
+  BvhConfig bvh;                  ///< used by "bvh" (4-wide) and "bvh2" (binary)
+  GridConfig grid;                ///< used by "grid"
+  TwoLevelGridConfig grid2;       ///< used by "grid2"
+  OctreeConfig octree;            ///< used by "octree"
   IrregularGridConfig irregular;  ///< used by "irregular"
 };
 
