@@ -90,8 +90,8 @@ std::string draw(const Geometry& g, const Ray& ray, const std::vector<Panel>& pa
     }
     for (const Sphere& s : g.spheres) {
       const double r = std::sqrt(std::max(0.0, double(s.radius) * s.radius - double(kZ0) * kZ0));
-      svg += fmt::format("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"#555\"/>\n", sx(s.center.x, i),
-                         sy(s.center.y), r / kSide * kPanel);
+      svg += fmt::format("<circle cx=\"{:.2f}\" cy=\"{:.2f}\" r=\"{:.2f}\" fill=\"#555\" fill-opacity=\"0.45\"/>\n",
+                         sx(s.center.x, i), sy(s.center.y), r / kSide * kPanel);
     }
     const float t_end = panel.hit ? panel.hit_t : 2.f * kSide;
     const Vec3 a = ray.origin, b = ray.at(t_end);

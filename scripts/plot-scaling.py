@@ -20,17 +20,19 @@ COLOURS = {"brute": "#888888", "grid": "#1f77b4", "grid2": "#17becf", "octree": 
 
 def load(paths):
     runs = defaultdict(list)  # generator -> [(primitives, structure name, primary Mrays/s, build s)]
+    threads = set()
     for path in paths:
         with open(path) as f:
             data = json.load(f)
         m = re.match(r"spd:(\w+)", data["scene"])
         name = m.group(1) if m else data["scene"]
+        threads.add(data["threads"])
         for s in data["structures"]:
             if s["skipped"]:
                 continue
             runs[name].append((data["primitives"], s["name"], s["rays"]["primary"]["mrays_per_second"],
                                s["build_seconds"]))
-    return runs
+    return runs, ", ".join(str(t) for t in sorted(threads))
 
 
 def log_ticks(lo, hi):
@@ -74,12 +76,12 @@ def panel(x0, y0, w, h, series, ylabel, value_index):
     return "\n".join(out)
 
 
-def write_svg(path, title, series):
+def write_svg(path, title, series, threads):
     w, h = 900, 420
     parts = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" '
              f'font-size="12">', f'<rect width="{w}" height="{h}" fill="#fff"/>',
              f'<text x="{w / 2}" y="22" text-anchor="middle" font-size="15">{title}</text>',
-             panel(70, 60, 330, 290, series, "primary rays: Mrays/s (2 threads)", 1),
+             panel(70, 60, 330, 290, series, f"primary rays: Mrays/s ({threads} threads)", 1),
              panel(520, 60, 330, 290, series, "build time: seconds", 2)]
     for i, name in enumerate(series):
         parts.append(f'<rect x="{70 + i * 110}" y="{h - 22}" width="14" height="4" fill="{COLOURS.get(name, "#000")}"/>')
@@ -94,12 +96,13 @@ def main():
     ap.add_argument("--out", required=True)
     ap.add_argument("results", nargs="+")
     args = ap.parse_args()
-    runs = load(args.results)
+    runs, threads = load(args.results)
     for generator, rows in sorted(runs.items()):
         series = defaultdict(list)
         for prims, name, mrays, build in rows:
             series[name].append((prims, mrays, build))
-        write_svg(f"{args.out}/scaling-{generator}.svg", f"spd:{generator}: throughput and build time", series)
+        write_svg(f"{args.out}/scaling-{generator}.svg", f"spd:{generator}: throughput and build time", series,
+                  threads)
         names = list(series)
         print(f"\n### spd:{generator}\n")
         print("| primitives | " + " | ".join(f"{n} Mrays/s" for n in names) + " | " +
