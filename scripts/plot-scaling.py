@@ -81,7 +81,7 @@ def write_svg(path, title, series, threads):
     parts = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" '
              f'font-size="12">', f'<rect width="{w}" height="{h}" fill="#fff"/>',
              f'<text x="{w / 2}" y="22" text-anchor="middle" font-size="15">{title}</text>',
-             panel(70, 60, 330, 290, series, f"primary rays: Mrays/s ({threads} threads)", 1),
+             panel(70, 60, 330, 290, series, f"primary rays: Mrays/s ({threads} thread{'' if threads == '1' else 's'})", 1),
              panel(520, 60, 330, 290, series, "build time: seconds", 2)]
     for i, name in enumerate(series):
         parts.append(f'<rect x="{70 + i * 110}" y="{h - 22}" width="14" height="4" fill="{COLOURS.get(name, "#000")}"/>')
