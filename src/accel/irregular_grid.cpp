@@ -110,19 +110,16 @@ bool IrregularGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, MakeMailbox 
   // component so small that its reciprocal overflows moves the ray across no plane within float
   // range of t; it is treated as zero, like +-0 ("still" axes never give the exit).
   const Vec3 entry = ray.at(t_in);
-  // Per-ray constants of one step, so that a step costs one load of the cell and a multiply-add
-  // per axis:
-  //  - along axis a the ray crosses lattice plane k at t_base[a] + k * t_step[a] (the uniform
-  //    grid's incremental form: it differs from the exact crossing by a few ulps of the distance
-  //    travelled, which the insertion margins cover); a still axis never gives the exit
-  //    (t_base = inf, t_step = 0);
+  // Per-ray constants of one step:
   //  - the ray's point at t lies at lattice coordinate p_base[a] + t * p_step[a];
   //  - far[a] picks the plane the ray leaves through from the cell's six bounds (lo x, y, z,
   //    hi x, y, z): hi[a] moving up, lo[a] moving down; the voxel beyond it is that plane's
   //    index plus beyond[a] (0 up, -1 down).
+  // The exit distances stay (plane - o) / d per plane: the incremental form t_base + k * t_step
+  // overflows to inf - inf for a component near FLT_MIN (tests/accel/robustness_test.cpp).
   int voxel[3];
   bool still[3];
-  float t_base[3], t_step[3], p_base[3], p_step[3];
+  float p_base[3], p_step[3];
   int far[3], beyond[3];
   for (int a = 0; a < 3; ++a) {
     const int n = g.lattice[a];
@@ -130,8 +127,6 @@ bool IrregularGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, MakeMailbox 
     voxel[a] = f >= 0.f ? (f < float(n) ? static_cast<int>(f) : n - 1) : 0;  // NaN -> 0
     const bool up = d[a] > 0.f;
     still[a] = d[a] == 0.f || !std::isfinite(inv_d[a]);
-    t_base[a] = still[a] ? kInf : (g.origin[a] - o[a]) * inv_d[a];
-    t_step[a] = still[a] ? 0.f : g.step[a] * inv_d[a];
     p_base[a] = (o[a] - g.origin[a]) * g.inv_step[a];
     p_step[a] = d[a] * g.inv_step[a];
     far[a] = up ? 3 + a : a;
@@ -162,7 +157,7 @@ bool IrregularGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, MakeMailbox 
     std::uint16_t bound[6];
     std::memcpy(bound, &cell, sizeof(bound));
     float t[3];
-    for (int a = 0; a < 3; ++a) t[a] = t_base[a] + float(bound[far[a]]) * t_step[a];
+    for (int a = 0; a < 3; ++a) t[a] = still[a] ? kInf : (g.plane(a, bound[far[a]]) - o[a]) * inv_d[a];
     const float t_exit = std::min(t[0], std::min(t[1], t[2]));
     // A hit before the exit is the closest (see the top of the file); a range ending inside the
     // box has nothing farther to look at. A ray that moves along no axis has t_exit = inf.
