@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "leaf_test.h"
@@ -109,14 +110,27 @@ bool IrregularGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, MakeMailbox 
   // component so small that its reciprocal overflows moves the ray across no plane within float
   // range of t; it is treated as zero, like +-0 ("still" axes never give the exit).
   const Vec3 entry = ray.at(t_in);
+  // Per-ray constants of one step:
+  //  - the ray's point at t lies at lattice coordinate p_base[a] + t * p_step[a];
+  //  - far[a] picks the plane the ray leaves through from the cell's six bounds (lo x, y, z,
+  //    hi x, y, z): hi[a] moving up, lo[a] moving down; the voxel beyond it is that plane's
+  //    index plus beyond[a] (0 up, -1 down).
+  // The exit distances stay (plane - o) / d per plane: the incremental form t_base + k * t_step
+  // overflows to inf - inf for a component near FLT_MIN (tests/accel/robustness_test.cpp).
   int voxel[3];
-  bool up[3], still[3];
+  bool still[3];
+  float p_base[3], p_step[3];
+  int far[3], beyond[3];
   for (int a = 0; a < 3; ++a) {
     const int n = g.lattice[a];
     const float f = (entry[a] - g.origin[a]) * g.inv_step[a];
     voxel[a] = f >= 0.f ? (f < float(n) ? static_cast<int>(f) : n - 1) : 0;  // NaN -> 0
-    up[a] = d[a] > 0.f;
+    const bool up = d[a] > 0.f;
     still[a] = d[a] == 0.f || !std::isfinite(inv_d[a]);
+    p_base[a] = (o[a] - g.origin[a]) * g.inv_step[a];
+    p_step[a] = d[a] * g.inv_step[a];
+    far[a] = up ? 3 + a : a;
+    beyond[a] = up ? 0 : -1;
   }
   const IrregularCell* const cells = g.cells.data();
   auto mailbox = make_mailbox();
@@ -140,24 +154,24 @@ bool IrregularGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, MakeMailbox 
       if constexpr (kAnyHit) break;
     }
     // Where the ray leaves the expanded box: the nearest of its three far planes.
+    std::uint16_t bound[6];
+    std::memcpy(bound, &cell, sizeof(bound));
     float t[3];
-    for (int a = 0; a < 3; ++a) {
-      t[a] = still[a] ? kInf : (g.plane(a, up[a] ? cell.hi[a] : cell.lo[a]) - o[a]) * inv_d[a];
-    }
+    for (int a = 0; a < 3; ++a) t[a] = still[a] ? kInf : (g.plane(a, bound[far[a]]) - o[a]) * inv_d[a];
     const float t_exit = std::min(t[0], std::min(t[1], t[2]));
     // A hit before the exit is the closest (see the top of the file); a range ending inside the
     // box has nothing farther to look at. A ray that moves along no axis has t_exit = inf.
     if (tmax <= t_exit) break;
     const int x = t[0] == t_exit ? 0 : (t[1] == t_exit ? 1 : 2);
-    const int next = up[x] ? int(cell.hi[x]) : int(cell.lo[x]) - 1;
+    const int next = int(bound[far[x]]) + beyond[x];
     if (next < 0 || next >= g.lattice[x]) break;  // left the lattice
     for (int a = 0; a < 3; ++a) {
       if (a == x || still[a]) continue;
       const int n = g.lattice[a];
-      const float f = (o[a] + t_exit * d[a] - g.origin[a]) * g.inv_step[a];
+      const float f = p_base[a] + t_exit * p_step[a];
       int k = f >= 0.f ? (f < float(n) ? static_cast<int>(f) : n - 1) : 0;
-      k = std::clamp(k, int(cell.lo[a]), int(cell.hi[a]) - 1);
-      voxel[a] = up[a] ? std::max(k, voxel[a]) : std::min(k, voxel[a]);
+      k = std::clamp(k, int(bound[a]), int(bound[3 + a]) - 1);
+      voxel[a] = beyond[a] == 0 ? std::max(k, voxel[a]) : std::min(k, voxel[a]);
     }
     voxel[x] = next;
   }
