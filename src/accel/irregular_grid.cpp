@@ -52,20 +52,7 @@ IrregularGrid::IrregularGrid(const Geometry& geometry, std::span<const std::uint
   // triangles are stored in no spatial order, testing them in place cost most of the time).
   m_triangle_count = static_cast<std::uint32_t>(geometry.triangles.size());
   m_sphere_end = m_triangle_count + static_cast<std::uint32_t>(geometry.spheres.size());
-  const auto& ids_in_order = m_data.ids;
-  const bool any_triangle =
-      std::any_of(ids_in_order.begin(), ids_in_order.end(), [&](std::uint32_t id) { return id < m_triangle_count; });
-  const bool any_sphere = std::any_of(ids_in_order.begin(), ids_in_order.end(),
-                                      [&](std::uint32_t id) { return id >= m_triangle_count && id < m_sphere_end; });
-  m_triangles.assign(any_triangle ? ids_in_order.size() : 0, Triangle{});
-  m_spheres.assign(any_sphere ? ids_in_order.size() : 0, Sphere{});
-  for (std::size_t i = 0; i < ids_in_order.size(); ++i) {
-    const std::uint32_t id = ids_in_order[i];
-    if (id < m_triangle_count)
-      m_triangles[i] = geometry.triangles[id];
-    else if (id < m_sphere_end)
-      m_spheres[i] = geometry.spheres[id - m_triangle_count];
-  }
+  copy_slot_primitives(geometry, m_data.ids, m_triangles, m_spheres);
   if (config.mailbox && !m_data.ids.empty()) {
     m_mailboxes = std::make_unique<Mailboxes>(static_cast<std::uint32_t>(m_data.ids.size()));
   }

@@ -3,7 +3,9 @@
 // the binary BVH's leaves, the uniform grid's cells and the octree's leaves. It holds the rule every structure must
 // share — on an exact tie in t the lower primitive id wins (Hit::tie_limit) — so that all of them return the same hit.
 
+#include <algorithm>
 #include <cstdint>
+#include <vector>
 
 #include "raylab/geometry/geometry.h"
 #include "traversal_common.h"
@@ -41,6 +43,29 @@ struct SlotPrimitives {
   /// The sphere at `slot` (global id `id`).
   const Sphere& sphere(std::uint32_t slot, std::uint32_t /*id*/) const { return spheres[slot]; }
 };
+
+/// Fills `triangles` and `spheres` with copies of the primitives `ids` names, slot by slot, for
+/// SlotPrimitives (the grids): slot i holds the copy of primitive ids[i] when it is a triangle
+/// (or a sphere); other slots stay zero, and an array stays empty when no slot needs it. With
+/// `ids` in spatial order, a cell's references point to neighbouring copies instead of all over
+/// the scene.
+inline void copy_slot_primitives(const Geometry& geometry, const std::vector<std::uint32_t>& ids,
+                                 std::vector<Triangle>& triangles, std::vector<Sphere>& spheres) {
+  const auto triangle_count = static_cast<std::uint32_t>(geometry.triangles.size());
+  const auto sphere_end = triangle_count + static_cast<std::uint32_t>(geometry.spheres.size());
+  const bool any_triangle = std::any_of(ids.begin(), ids.end(), [&](std::uint32_t id) { return id < triangle_count; });
+  const bool any_sphere =
+      std::any_of(ids.begin(), ids.end(), [&](std::uint32_t id) { return id >= triangle_count && id < sphere_end; });
+  triangles.assign(any_triangle ? ids.size() : 0, Triangle{});
+  spheres.assign(any_sphere ? ids.size() : 0, Sphere{});
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    const std::uint32_t id = ids[i];
+    if (id < triangle_count)
+      triangles[i] = geometry.triangles[id];
+    else if (id < sphere_end)
+      spheres[i] = geometry.spheres[id - triangle_count];
+  }
+}
 
 /// Primitives read from the Geometry by global id, with no copies: the octree. `ids` still maps a structure's slot to
 /// the global id.

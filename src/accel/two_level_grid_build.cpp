@@ -18,6 +18,7 @@
 #include "grid_distance.h"
 #include "grid_insert.h"
 #include "grid_walk.h"
+#include "leaf_test.h"
 #include "mailbox.h"
 #include "raylab/accel/two_level_grid.h"
 #include "raylab/accel/uniform_grid.h"
@@ -279,19 +280,7 @@ void TwoLevelGrid::build() {
       chessboard_distances(res, m_config.skip_empty ? kMaxSkip : 1, [&](std::size_t c) { return occupied[c] != 0; });
 
   // Copies of the triangles and spheres in the grid's own (spatial) order.
-  const bool any_triangle =
-      std::any_of(m_ids.begin(), m_ids.end(), [&](std::uint32_t id) { return id < m_triangle_count; });
-  const bool any_sphere = std::any_of(m_ids.begin(), m_ids.end(),
-                                      [&](std::uint32_t id) { return id >= m_triangle_count && id < m_sphere_end; });
-  m_triangles.assign(any_triangle ? count : 0, Triangle{});
-  m_spheres.assign(any_sphere ? count : 0, Sphere{});
-  for (std::uint32_t i = 0; i < count; ++i) {
-    const std::uint32_t id = m_ids[i];
-    if (id < m_triangle_count)
-      m_triangles[i] = m_geometry.triangles[id];
-    else if (id < m_sphere_end)
-      m_spheres[i] = m_geometry.spheres[id - m_triangle_count];
-  }
+  copy_slot_primitives(m_geometry, m_ids, m_triangles, m_spheres);
   if (m_config.mailbox) m_mailboxes = std::make_unique<Mailboxes>(count);
 }
 
