@@ -5,7 +5,13 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include "grid_walk.h"
 #include "raylab/geometry/geometry.h"
 #include "raylab/geometry/overlap.h"
 
@@ -94,6 +100,28 @@ void for_each_overlapped_cell(const Geometry& geometry, std::uint32_t id, const 
       }
     }
   }
+}
+
+/// Sorts `ids` by the cell of a grid (low corner `lo`, `inv_cell` cells per unit length,
+/// `resolution` cells per axis) holding the centre of each primitive's box, x fastest, ties by
+/// id: a deterministic spatial order in which a cell's primitives lie together, so the copies
+/// made in this order (copy_slot_primitives) are read together.
+inline void order_by_grid_cell(const Geometry& geometry, std::vector<std::uint32_t>& ids, const Vec3& lo,
+                               const Vec3& inv_cell, const std::array<int, 3>& resolution) {
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(ids.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ids.size(), 1024), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      const Vec3 c = geometry.bounds(ids[i]).center();
+      std::uint64_t key = 0;
+      for (int a = 2; a >= 0; --a) {
+        const int cell = clamp_cell((c[a] - lo[a]) * inv_cell[a], resolution[a]);
+        key = key * std::uint64_t(resolution[a]) + std::uint64_t(cell);
+      }
+      keyed[i] = {key, ids[i]};
+    }
+  });
+  tbb::parallel_sort(keyed.begin(), keyed.end());
+  for (std::size_t i = 0; i < keyed.size(); ++i) ids[i] = keyed[i].second;
 }
 
 }  // namespace raylab

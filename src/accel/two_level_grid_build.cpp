@@ -285,22 +285,7 @@ void TwoLevelGrid::build() {
 }
 
 void TwoLevelGrid::order_by_top_cell() {
-  // Key: the top cell holding the centre of the primitive's box (x fastest), then the id, so
-  // the order is deterministic and a top cell's primitives lie together.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(m_ids.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m_ids.size(), 1024), [&](const auto& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      const Vec3 c = m_geometry.bounds(m_ids[i]).center();
-      std::uint64_t key = 0;
-      for (int a = 2; a >= 0; --a) {
-        const int cell = clamp_cell((c[a] - m_bounds.lo[a]) * m_top_inv_cell[a], m_top_resolution[a]);
-        key = key * std::uint64_t(m_top_resolution[a]) + std::uint64_t(cell);
-      }
-      keyed[i] = {key, m_ids[i]};
-    }
-  });
-  tbb::parallel_sort(keyed.begin(), keyed.end());
-  for (std::size_t i = 0; i < keyed.size(); ++i) m_ids[i] = keyed[i].second;
+  order_by_grid_cell(m_geometry, m_ids, m_bounds.lo, m_top_inv_cell, m_top_resolution);
 }
 
 Box3 TwoLevelGrid::top_cell_box(int x, int y, int z) const { return {top_lo(x, y, z), top_hi(x, y, z)}; }
