@@ -47,6 +47,11 @@ struct AxisPlanes {
   float inv_cell;  ///< cells per unit length (0 on a flat axis)
 };
 
+/// Deduces Plane from the brace initializer; clang before 17 has no class template argument
+/// deduction for aggregates, so without this guide `AxisPlanes{lambda, n, inv}` fails there.
+template <class Plane>
+AxisPlanes(Plane, int, float) -> AxisPlanes<Plane>;
+
 /// A range of cells on one axis (inclusive); empty when first > last.
 struct AxisRange {
   int first, last;
