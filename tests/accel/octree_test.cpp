@@ -325,6 +325,55 @@ TEST(OctreeTree, AllPrimitivesInOneCell) {
   }
 }
 
+// More than K primitives sharing one line: triangles with a common edge on the y axis (a fan of
+// faces around it) and degenerate triangles lying on it, the scene of the accel fuzz target that
+// took the octree 6 s and 80 MB. Splitting along the line keeps every reference in the two
+// children on it at every level, which separates nothing; the tree must stay small, and still
+// find every hit.
+TEST(OctreeTree, PrimitivesSharingOneLine) {
+  Geometry g;
+  const Vec3 a{0.f, 0.f, 0.f}, b{0.f, 16384.f, 0.f};
+  for (int i = 0; i < 8; ++i) {  // a fan of faces around the edge a-b
+    const float angle = 0.7f * float(i);
+    g.add(Triangle{a, b, Vec3{16384.f * std::cos(angle), 0.f, 16384.f * std::sin(angle)}}, 0);
+  }
+  for (int i = 0; i < 6; ++i) g.add(Triangle{a, b, Vec3{0.f, 64.f * float(i + 1), 0.f}}, 1);  // on the line
+  for (const OctreeConfig& c : {OctreeConfig{}, config(4, 24)}) {
+    const Octree octree(g, c);
+    check_tree(g, octree.tree(), c, name_of(c));
+    // A chain of cells down each end of the line, not 2^L cells along it.
+    EXPECT_LE(octree.tree().nodes.size(), std::size_t{8} * 8 * kOctreeDepthLimit + 1) << name_of(c);
+    Sampler s(13);
+    std::vector<Ray> rays = random_rays(g, s, 500);
+    for (int i = 0; i < 500; ++i) {  // aimed at points of the line from everywhere
+      const Vec3 o = s.in_box(Vec3(-2e4f), Vec3(2e4f));
+      rays.push_back({o, 0.f, Vec3{0.f, s.uni(0.f, 16384.f), 0.f} - o});
+    }
+    check(g, octree, make_reference(g, rays, s), name_of(c));
+  }
+}
+
+TEST(OctreeSplitRule, NeverSplitsWhenTwoChildrenKeepEveryReference) {
+  const Box3 content{{0.f, 0.f, 0.f}, {4.f, 4.f, 4.f}};
+  std::array<std::size_t, 8> counts{};
+  std::array<Box3, 8> contents;
+  // Twenty references along an edge of the cell: both children on it keep all twenty in boxes of
+  // a quarter of the area each, which the area terms alone would take (1 + 20 / 2 < 20).
+  for (int c : {0, 1}) {
+    counts[c] = 20;
+    contents[c] = {{c * 2.f, 0.f, 0.f}, {c * 2.f + 2.f, 2.f, 2.f}};
+  }
+  EXPECT_FALSE(octree_split_pays(20, content, counts, contents));
+  // The same areas with one reference fewer on one side separate something: the area rule decides.
+  counts[1] = 19;
+  EXPECT_TRUE(octree_split_pays(20, content, counts, contents));
+  // One child keeping everything (a small object in a large cell) is still followed from 16 on.
+  counts = {};
+  counts[3] = 20;
+  contents[3] = {{0.f, 0.f, 0.f}, {0.5f, 0.5f, 0.5f}};
+  EXPECT_TRUE(octree_split_pays(20, content, counts, contents));
+}
+
 // Every interior node's child boxes: an empty child has the empty box; any other child's box lies
 // in its enlarged cell and holds every primitive of its subtree's leaves, clipped to that cell, so
 // a ray that can hit one of them in the child's cell enters the box.

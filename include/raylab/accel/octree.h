@@ -114,6 +114,8 @@ struct OctreeTree {
 /// the references `counts` and content boxes `contents` its eight children would get (see
 /// kOctreeTraversalCost). A split that leaves every reference in one child is made only for 16
 /// references or more: a small object in a large empty cell, not primitives meeting in a point.
+/// One that leaves every reference in two or more children is never made: it separates nothing
+/// (primitives sharing a line or a point).
 bool octree_split_pays(std::size_t n, const Box3& content, const std::array<std::size_t, 8>& counts,
                        const std::array<Box3, 8>& contents);
 
