@@ -192,7 +192,7 @@ inline void rays_in_face_planes(const Accelerator& bvh, const Geometry& g, float
     r.origin = s.in_box(Vec3(lo - 1.f), Vec3(hi + 1.f));
     r.origin[axis] = s.rng.next_float() < 0.5f ? lo : hi;  // exactly on a face plane (and node planes)
     r.direction = s.unit();
-    r.direction[axis] = s.rng.next_float() < 0.5f ? 0.f : -0.f;
+    r.direction[axis] = signed_zero(s);
     if (i % 4 == 0) r.direction[(axis + 1) % 3] = 0.f;  // along a face edge direction too
     rays.push_back(r);
   }

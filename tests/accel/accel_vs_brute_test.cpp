@@ -121,6 +121,13 @@ TEST_P(AccelVsBrute, OnePrimitive) {
   EXPECT_FALSE(accel->occluded(Ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, 1.f}, 3.5f}));
   EXPECT_FALSE(accel->occluded(Ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, -1.f}}));
   EXPECT_FALSE(accel->occluded(Ray{{0.f, 0.f, 10.f}, 0.f, {0.f, 0.f, 1.f}}));  // behind the origin
+  EXPECT_EQ(ray.tmax, hit.t);
+  Ray inside{{0.f, 0.f, 0.f}, 5.f, {0.f, 0.f, 1.f}};  // tmin past the near side: the far side
+  ASSERT_TRUE(accel->intersect(inside, hit));
+  EXPECT_FLOAT_EQ(hit.t, 6.f);
+  Ray past{{0.f, 0.f, 0.f}, 6.5f, {0.f, 0.f, 1.f}};  // tmin beyond the sphere
+  Hit none;
+  EXPECT_FALSE(accel->intersect(past, none));
 }
 
 std::string param_name(const ::testing::TestParamInfo<Param>& info) {

@@ -261,44 +261,13 @@ TEST(IrregularGridBuild, RejectsInvalidParameters) {
 // ---------------------------------------------------------------------------------------------
 // Rays at the grid's weak points
 
-float signed_zero(Sampler& s) { return s.rng.next_float() < 0.5f ? 0.f : -0.f; }
-
 // Rays in the lattice planes of cell faces, along cell edges, from cell corners and through them.
 std::vector<Ray> boundary_rays(const IrregularGridData& d, Sampler& s, int count) {
-  std::vector<Ray> rays;
-  const Box3 box = d.bounds;
-  for (int i = 0; i < count; ++i) {
+  return rays_at_lattice_points(d.bounds, s, count, [&] {
     const auto& b = d.boxes[s.rng.next_u32() % d.boxes.size()];
-    const Vec3 corner{d.plane(0, b[3 * (s.rng.next_u32() % 2)]), d.plane(1, b[1 + 3 * (s.rng.next_u32() % 2)]),
-                      d.plane(2, b[2 + 3 * (s.rng.next_u32() % 2)])};
-    const int axis = static_cast<int>(s.rng.next_u32() % 3);
-    Ray r;
-    r.origin = s.in_box(box.lo - box.extent() * 0.2f, box.hi + box.extent() * 0.2f);
-    r.direction = s.unit();
-    switch (i % 5) {
-      case 0:  // in a face plane, parallel to it
-        r.origin[axis] = corner[axis];
-        r.direction[axis] = signed_zero(s);
-        break;
-      case 1:  // along a cell edge
-        r.origin[axis] = corner[axis];
-        r.origin[(axis + 1) % 3] = corner[(axis + 1) % 3];
-        r.direction = {signed_zero(s), signed_zero(s), signed_zero(s)};
-        r.direction[(axis + 2) % 3] = s.rng.next_float() < 0.5f ? 1.f : -1.f;
-        break;
-      case 2:  // from a corner
-        r.origin = corner;
-        break;
-      case 3:  // through a corner
-        r.direction = corner - r.origin;
-        break;
-      default:
-        r.origin[axis] = corner[axis];
-        break;
-    }
-    rays.push_back(r);
-  }
-  return rays;
+    return Vec3{d.plane(0, b[3 * (s.rng.next_u32() % 2)]), d.plane(1, b[1 + 3 * (s.rng.next_u32() % 2)]),
+                d.plane(2, b[2 + 3 * (s.rng.next_u32() % 2)])};
+  });
 }
 
 TEST(IrregularGridAdversarial, RaysAlongAndThroughCellBoundaries) {
@@ -321,14 +290,8 @@ TEST(IrregularGridAdversarial, AxisAlignedFacesOnLatticePlanes) {
   Sampler s(13);
   const IrregularGridConfig fine = kConfigs[4].config;
   std::vector<Ray> rays = boundary_rays(build_irregular_grid(g, g.primitive_ids(), fine), s, 1000);
-  for (int i = 0; i < 1500; ++i) {
-    Ray r;
-    r.origin = s.in_box(Vec3(-1.f), Vec3(5.f));
-    r.direction = {signed_zero(s), signed_zero(s), signed_zero(s)};
-    r.direction[i % 3] = s.rng.next_float() < 0.5f ? 1.f : -1.f;
-    if (i % 4 == 0) r.origin[(i + 1) % 3] = 1.f + 2.f * float(s.rng.next_u32() % 2);  // in a face plane
-    rays.push_back(r);
-  }
+  const std::vector<Ray> axis_rays = axis_rays_in_cube_faces(s, 1500);
+  rays.insert(rays.end(), axis_rays.begin(), axis_rays.end());
   check(g, IrregularGrid(g), rays, "cubes default");
   check(g, IrregularGrid(g, fine), rays, "cubes fine");
 }
@@ -381,18 +344,8 @@ TEST(IrregularGrid, SinglePrimitive) {
   Geometry g;
   g.add(Sphere{{0.f, 0.f, 5.f}, 1.f}, 3);
   const IrregularGrid grid(g);
+  // The queries' answers are checked for every structure (AccelVsBrute.OnePrimitive).
   EXPECT_GE(grid.info().leaf_count, 1u);
-  Ray ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, 1.f}};
-  Hit hit;
-  ASSERT_TRUE(grid.intersect(ray, hit));
-  EXPECT_FLOAT_EQ(hit.t, 4.f);
-  EXPECT_EQ(hit.prim_id, 0u);
-  EXPECT_TRUE(grid.occluded(Ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, 1.f}, 4.5f}));
-  EXPECT_FALSE(grid.occluded(Ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, 1.f}, 3.5f}));
-  EXPECT_FALSE(grid.occluded(Ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, -1.f}}));
-  Ray past{{0.f, 0.f, 0.f}, 6.5f, {0.f, 0.f, 1.f}};
-  Hit none;
-  EXPECT_FALSE(grid.intersect(past, none));
 }
 
 // The walk drawn by cells_on_ray: boxes in ray order, each one entered no later than the ray

@@ -172,6 +172,9 @@ inline Vec3 point_on(const Geometry& g, std::uint32_t id, Sampler& s) {
   return s.in_box(box.lo, box.hi);
 }
 
+/// +0 or -0 at even odds.
+inline float signed_zero(Sampler& s) { return s.rng.next_float() < 0.5f ? 0.f : -0.f; }
+
 // Origins inside and outside the scene box; directions uniform, axis-parallel (with +0 and -0 in
 // the other components), or aimed at a random primitive so that a good share of rays hit.
 inline std::vector<Ray> random_rays(const Geometry& g, Sampler& s, int count) {
@@ -182,8 +185,7 @@ inline std::vector<Ray> random_rays(const Geometry& g, Sampler& s, int count) {
     r.origin = s.rng.next_float() < 0.5f ? s.in_box(box.lo, box.hi) : s.in_box(box.lo - margin, box.hi + margin);
     const float kind = s.rng.next_float();
     if (kind < 0.15f) {
-      Vec3 d{s.rng.next_float() < 0.5f ? 0.f : -0.f, s.rng.next_float() < 0.5f ? 0.f : -0.f,
-             s.rng.next_float() < 0.5f ? 0.f : -0.f};
+      Vec3 d{signed_zero(s), signed_zero(s), signed_zero(s)};
       d[static_cast<int>(s.rng.next_u32() % 3)] = s.rng.next_float() < 0.5f ? 1.f : -1.f;
       r.direction = d;
     } else if (kind < 0.5f) {
@@ -192,6 +194,61 @@ inline std::vector<Ray> random_rays(const Geometry& g, Sampler& s, int count) {
       r.direction = s.unit() * s.uni(0.5f, 2.f);
     }
     if (s.rng.next_float() < 0.1f) r.tmin = s.uni(0.f, 0.3f) * length(box.extent()) / length(r.direction);
+  }
+  return rays;
+}
+
+/// Rays at a structure's weak points around the lattice points `point_of()` returns (cell
+/// corners): in a plane through the point and parallel to it (+0 or -0 across it), along a line
+/// of two such planes, starting at the point, aimed through it, and starting in one of its planes
+/// in any direction. Origins elsewhere are drawn from `box` grown by a fifth on every side.
+template <class PointOf>
+std::vector<Ray> rays_at_lattice_points(const Box3& box, Sampler& s, int count, PointOf point_of) {
+  std::vector<Ray> rays;
+  for (int i = 0; i < count; ++i) {
+    const Vec3 c = point_of();
+    const int axis = static_cast<int>(s.rng.next_u32() % 3);
+    Ray r;
+    r.origin = s.in_box(box.lo - box.extent() * 0.2f, box.hi + box.extent() * 0.2f);
+    r.direction = s.unit();
+    switch (i % 5) {
+      case 0:  // in a plane, parallel to it
+        r.origin[axis] = c[axis];
+        r.direction[axis] = signed_zero(s);
+        break;
+      case 1:  // along a line where two planes meet (a cell edge)
+        r.origin[axis] = c[axis];
+        r.origin[(axis + 1) % 3] = c[(axis + 1) % 3];
+        r.direction = {signed_zero(s), signed_zero(s), signed_zero(s)};
+        r.direction[(axis + 2) % 3] = s.rng.next_float() < 0.5f ? 1.f : -1.f;
+        break;
+      case 2:  // from the point
+        r.origin = c;
+        break;
+      case 3:  // through the point
+        r.direction = c - r.origin;
+        break;
+      default:  // from a point of a plane, in any direction
+        r.origin[axis] = c[axis];
+        break;
+    }
+    rays.push_back(r);
+  }
+  return rays;
+}
+
+/// Axis-parallel rays (+0 and -0 in the other components) from inside and around the box
+/// [-1, 5]^3, every fourth starting in one of the planes 1 or 3: for the cube meshes centred at
+/// (2, 2, 2) with half-edges 2 and 1, whose faces lie on cell planes.
+inline std::vector<Ray> axis_rays_in_cube_faces(Sampler& s, int count) {
+  std::vector<Ray> rays;
+  for (int i = 0; i < count; ++i) {
+    Ray r;
+    r.origin = s.in_box(Vec3(-1.f), Vec3(5.f));
+    r.direction = {signed_zero(s), signed_zero(s), signed_zero(s)};
+    r.direction[i % 3] = s.rng.next_float() < 0.5f ? 1.f : -1.f;
+    if (i % 4 == 0) r.origin[(i + 1) % 3] = 1.f + 2.f * float(s.rng.next_u32() % 2);  // in a face plane
+    rays.push_back(r);
   }
   return rays;
 }

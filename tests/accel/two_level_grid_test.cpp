@@ -115,7 +115,6 @@ Geometry lattice_scene() {
 std::vector<Ray> lattice_rays(Sampler& s) {
   std::vector<Ray> rays;
   auto integer = [&] { return float(s.rng.next_u32() % 9); };
-  auto signed_zero = [&] { return s.rng.next_float() < 0.5f ? 0.f : -0.f; };
   for (int i = 0; i < 3000; ++i) {
     Ray r;
     r.origin = s.in_box(Vec3(-2.f), Vec3(10.f));
@@ -124,13 +123,13 @@ std::vector<Ray> lattice_rays(Sampler& s) {
     switch (i % 6) {
       case 0:  // in a lattice plane
         r.origin[a] = integer();
-        r.direction[a] = signed_zero();
+        r.direction[a] = signed_zero(s);
         break;
       case 1:  // along a lattice line
         r.origin[a] = integer();
         r.origin[b] = integer();
-        r.direction[a] = signed_zero();
-        r.direction[b] = signed_zero();
+        r.direction[a] = signed_zero(s);
+        r.direction[b] = signed_zero(s);
         break;
       case 2:  // through lattice points along a diagonal
         r.origin = {integer(), integer(), integer()};
@@ -139,7 +138,7 @@ std::vector<Ray> lattice_rays(Sampler& s) {
         break;
       case 3:  // axis-parallel from inside
         r.origin = s.in_box(Vec3(0.f), Vec3(8.f));
-        r.direction = {signed_zero(), signed_zero(), signed_zero()};
+        r.direction = {signed_zero(s), signed_zero(s), signed_zero(s)};
         r.direction[a] = s.rng.next_float() < 0.5f ? 1.f : -1.f;
         break;
       case 4:  // aimed at a lattice point from inside
@@ -237,18 +236,10 @@ TEST(Grid2, OnePrimitive) {
   Geometry g;
   g.add(Sphere{{0.f, 0.f, 5.f}, 1.f}, 3);
   const TwoLevelGrid grid(g);
-  Ray ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, 1.f}};
+  // The queries' answers are checked for every structure (AccelVsBrute.OnePrimitive); here, the
+  // grid's own: a ray that misses the box costs nothing beyond the box test.
+  TraversalStats st;
   Hit hit;
-  ASSERT_TRUE(grid.intersect(ray, hit));
-  EXPECT_FLOAT_EQ(hit.t, 4.f);
-  EXPECT_EQ(hit.prim_id, 0u);
-  EXPECT_TRUE(grid.occluded(Ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, 1.f}, 4.5f}));
-  EXPECT_FALSE(grid.occluded(Ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, 1.f}, 3.5f}));
-  EXPECT_FALSE(grid.occluded(Ray{{0.f, 0.f, 0.f}, 0.f, {0.f, 0.f, -1.f}}));
-  Ray inside{{0.f, 0.f, 0.f}, 5.f, {0.f, 0.f, 1.f}};  // tmin past the near side: the far side
-  ASSERT_TRUE(grid.intersect(inside, hit));
-  EXPECT_FLOAT_EQ(hit.t, 6.f);
-  TraversalStats st;  // a ray that misses the box costs nothing beyond the box test
   Ray away{{0.f, 5.f, 0.f}, 0.f, {0.f, 0.f, 1.f}};
   EXPECT_FALSE(grid.intersect_counted(away, hit, st));
   EXPECT_EQ(st.nodes_visited + st.prim_tests, 0u);
