@@ -126,6 +126,22 @@ inline std::vector<std::uint32_t> every_third_id(const Geometry& g) {
   return ids;
 }
 
+/// What is wrong with a structure's closest hit for `ray` (`found`, `hit`, and the ray as the
+/// query left it, `after`) against brute force's (`expected_found`, `expected`): a missed or
+/// phantom hit, tmax not shrunk to the hit, another t (beyond kRelTol), another primitive
+/// without a tie, or a miss that changed the ray or the hit. Empty when they agree.
+inline std::string closest_hit_disagreement(const Geometry& g, const Ray& ray, bool expected_found, const Hit& expected,
+                                            bool found, const Hit& hit, const Ray& after) {
+  if (found != expected_found) return found ? "phantom hit" : "missed hit";
+  if (!found) return after.tmax != ray.tmax || hit.valid() ? "a miss changed the ray or the hit" : "";
+  if (after.tmax != hit.t) return "tmax not shrunk to the hit";
+  if (!near(expected.t, hit.t)) return "t differs: " + std::to_string(expected.t) + " vs " + std::to_string(hit.t);
+  if (expected.prim_id != hit.prim_id && !is_tie(g, hit.prim_id, ray, expected.t)) {
+    return "primitive " + std::to_string(hit.prim_id) + " instead of " + std::to_string(expected.prim_id);
+  }
+  return "";
+}
+
 // Compares every query of `bvh` with `brute` on `rays`; reports the first few failures in detail.
 inline void compare(const Geometry& g, const Accelerator& bvh, const Accelerator& brute, const std::vector<Ray>& rays,
                     Sampler& s) {
@@ -137,19 +153,12 @@ inline void compare(const Geometry& g, const Accelerator& bvh, const Accelerator
   int counted = 0;
   for (const Ray& ray : rays) {
     const auto [rb, hb, fb, rv, hv, fv] = both_hits(brute, bvh, ray);
-    if (fb != fv) {
-      fail(fb ? "BVH missed a hit" : "BVH found a phantom hit", ray);
-      continue;
+    if (fb && rb.tmax != hb.t) fail("brute force did not shrink tmax to the hit", ray);
+    if (const std::string wrong = closest_hit_disagreement(g, ray, fb, hb, fv, hv, rv); !wrong.empty()) {
+      fail(wrong, ray);
+      if (fb != fv) continue;
     }
-    if (fb) {
-      ++hits;
-      if (rb.tmax != hb.t || rv.tmax != hv.t) fail("tmax not shrunk to the hit", ray);
-      if (!near(hb.t, hv.t)) fail("t differs: " + std::to_string(hb.t) + " vs " + std::to_string(hv.t), ray);
-      // Another primitive is allowed only for a tie.
-      if (hb.prim_id != hv.prim_id && !is_tie(g, hv.prim_id, ray, hb.t)) fail("different primitive without a tie", ray);
-    } else if (rv.tmax != ray.tmax || hv.valid()) {
-      fail("a miss changed the ray or the hit", ray);
-    }
+    if (fb) ++hits;
 
     // Counted versions: the same answer, bit for bit, plus plausible counts.
     const auto [rc, hc, fc, st] = counted_hit(bvh, ray);

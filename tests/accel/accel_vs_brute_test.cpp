@@ -6,12 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "accel_compare_util.h"
 #include "raylab/accel/brute_force.h"
+#include "raylab/accel/factory.h"
 #include "raylab/accel/two_level.h"
 #include "test_scenes.h"
 
@@ -138,6 +141,34 @@ INSTANTIATE_TEST_SUITE_P(Accel, AccelVsBrute,
                          ::testing::Combine(::testing::Values("bvh", "bvh2", "grid", "grid2", "octree", "irregular"),
                                             ::testing::Values(WrapMode::kNone, WrapMode::kBox, WrapMode::kSphere)),
                          param_name);
+
+// A structure built over some of the primitives (every third, of every shape kind) answers as
+// brute force over the same ones, and never with a primitive outside them.
+class AccelOverSubset : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(AccelOverSubset, AnswersAsBruteForceOverTheSameIds) {
+  Sampler s(19);
+  const Geometry g = every_shape_kind(s);
+  const std::vector<std::uint32_t> ids = every_third_id(g);
+  const auto accel = make_accelerator(GetParam(), g, ids);
+  const BruteForce brute(g, ids);
+  EXPECT_EQ(accel->info().primitive_count, ids.size());
+  int failures = 0, hits = 0;
+  for (const Ray& ray : random_rays(g, s, 2000)) {
+    const auto [rb, hb, fb, rv, hv, fv] = both_hits(brute, *accel, ray);
+    std::string wrong = closest_hit_disagreement(g, ray, fb, hb, fv, hv, rv);
+    if (wrong.empty() && fv && !std::binary_search(ids.begin(), ids.end(), hv.prim_id))
+      wrong = "a primitive not built over";
+    if (wrong.empty() && accel->occluded(ray) != fb) wrong = "occluded disagrees";
+    if (!wrong.empty() && ++failures <= 5) ADD_FAILURE() << wrong << " for " << describe(ray);
+    hits += fb ? 1 : 0;
+  }
+  EXPECT_EQ(failures, 0);
+  EXPECT_GT(hits, 200);
+}
+
+INSTANTIATE_TEST_SUITE_P(Accel, AccelOverSubset,
+                         ::testing::Values("bvh", "bvh2", "grid", "grid2", "octree", "irregular"));
 
 }  // namespace
 }  // namespace raylab

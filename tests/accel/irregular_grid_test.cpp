@@ -62,16 +62,8 @@ TraversalStats check(const Geometry& g, const IrregularGrid& grid, const std::ve
   TraversalStats total;
   for (const Ray& ray : rays) {
     const auto [rb, hb, fb, rv, hv, fv] = both_hits(brute, grid, ray);
-    if (fv != fb) {
-      fail(fv ? "phantom hit" : "missed hit", ray);
-    } else if (fv) {
-      if (rv.tmax != hv.t) fail("tmax not shrunk to the hit", ray);
-      if (!near(hb.t, hv.t)) fail("t differs: " + std::to_string(hb.t) + " vs " + std::to_string(hv.t), ray);
-      if (hb.prim_id != hv.prim_id && !is_tie(g, hv.prim_id, ray, hb.t)) {
-        fail("primitive " + std::to_string(hv.prim_id) + " instead of " + std::to_string(hb.prim_id), ray);
-      }
-    } else if (rv.tmax != ray.tmax || hv.valid()) {
-      fail("a miss changed the ray or the hit", ray);
+    if (const std::string wrong = closest_hit_disagreement(g, ray, fb, hb, fv, hv, rv); !wrong.empty()) {
+      fail(wrong, ray);
     }
     const auto [rc, hc, fc, st] = counted_hit(grid, ray);
     if (fc != fv || !same_hit(hc, hv)) fail("intersect_counted differs from intersect", ray);

@@ -73,17 +73,8 @@ TraversalStats check(const Geometry& g, const Octree& octree, const Reference& r
     Ray rv = ray;
     Hit hv;
     const bool fv = octree.intersect(rv, hv);
-    if (fv != hb.valid()) {
-      fail(fv ? "phantom hit" : "missed hit", ray);
-    } else if (fv) {
-      if (rv.tmax != hv.t) fail("tmax not shrunk to the hit", ray);
-      if (!near(hb.t, hv.t)) fail("t differs: " + std::to_string(hb.t) + " vs " + std::to_string(hv.t), ray);
-      // Another primitive is allowed only for a tie.
-      if (hb.prim_id != hv.prim_id && !is_tie(g, hv.prim_id, ray, hb.t)) {
-        fail("primitive " + std::to_string(hv.prim_id) + " instead of " + std::to_string(hb.prim_id), ray);
-      }
-    } else if (rv.tmax != ray.tmax || hv.valid()) {
-      fail("a miss changed the ray or the hit", ray);
+    if (const std::string wrong = closest_hit_disagreement(g, ray, hb.valid(), hb, fv, hv, rv); !wrong.empty()) {
+      fail(wrong, ray);
     }
 
     const auto [rc, hc, fc, st] = counted_hit(octree, ray);
@@ -687,25 +678,6 @@ TEST(Octree, TiesAndTheIncomingHit) {
     ++checked;
   }
   EXPECT_GT(checked, 50);
-}
-
-// A structure over some of the primitives answers as brute force over the same ones.
-TEST(Octree, SubsetOfIds) {
-  Sampler s(19);
-  const Geometry g = every_shape_kind(s);
-  const std::vector<std::uint32_t> ids = every_third_id(g);
-  const Octree octree(g, ids);
-  const BruteForce brute(g, ids);
-  EXPECT_EQ(octree.info().primitive_count, ids.size());
-  int failures = 0;
-  for (const Ray& ray : random_rays(g, s, 2000)) {
-    const auto [rb, hb, fb, ro, ho, fo] = both_hits(brute, octree, ray);
-    if (fo != fb || (fo && (!near(ho.t, hb.t) || std::find(ids.begin(), ids.end(), ho.prim_id) == ids.end()))) {
-      if (++failures <= 5) ADD_FAILURE() << describe(ray);
-    }
-    if (octree.occluded(ray) != brute.occluded(ray) && ++failures <= 5) ADD_FAILURE() << "occluded " << describe(ray);
-  }
-  EXPECT_EQ(failures, 0);
 }
 
 // Mailboxes are per thread: rays traced in parallel get the answers of rays traced one by one.

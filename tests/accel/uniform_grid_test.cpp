@@ -413,23 +413,6 @@ TEST(GridAdversarial, IncomingHitAndTies) {
 }
 
 // A grid over some of the primitives sees only those.
-TEST(GridAdversarial, SubsetOfIds) {
-  Sampler s(25);
-  const Geometry g = spheres_and_triangles(s);
-  const std::vector<std::uint32_t> ids = every_third_id(g);
-  const UniformGrid grid(g, ids, GridConfig{3.f});
-  const BruteForce brute(g, ids);
-  EXPECT_EQ(grid.info().primitive_count, ids.size());
-  int failures = 0;
-  for (const Ray& ray : random_rays(g, s, 2000)) {
-    const auto [rb, hb, fb, rg, hg, fg] = both_hits(brute, grid, ray);
-    if (fb != fg || (fb && (hb.prim_id != hg.prim_id || hb.t != hg.t)) || grid.occluded(ray) != brute.occluded(ray)) {
-      ++failures;
-    }
-  }
-  EXPECT_EQ(failures, 0);
-}
-
 // ---------------------------------------------------------------------------------------------
 // Mailboxes
 
