@@ -50,8 +50,6 @@ IrregularGrid::IrregularGrid(const Geometry& geometry, std::span<const std::uint
   // Copies of the triangles and spheres in the grid's spatial order: a cell's references then
   // point to neighbouring entries instead of all over the scene (on the armadillo, whose
   // triangles are stored in no spatial order, testing them in place cost most of the time).
-  m_triangle_count = static_cast<std::uint32_t>(geometry.triangles.size());
-  m_sphere_end = m_triangle_count + static_cast<std::uint32_t>(geometry.spheres.size());
   copy_slot_primitives(geometry, m_data.ids, m_triangles, m_spheres);
   if (config.mailbox && !m_data.ids.empty()) {
     m_mailboxes = std::make_unique<Mailboxes>(static_cast<std::uint32_t>(m_data.ids.size()));
@@ -122,8 +120,7 @@ bool IrregularGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, MakeMailbox 
   const IrregularCell* const cells = g.cells.data();
   auto mailbox = make_mailbox();
   const WatertightRay wr(ray);
-  const SlotPrimitives prims{g.ids.data(),     m_triangles.data(), m_spheres.data(),
-                             m_triangle_count, m_sphere_end,       &m_geometry};
+  const SlotPrimitives prims(g.ids.data(), m_triangles, m_spheres, m_geometry);
   const SlotFromList slots{g.refs.data()};
   const float tmin = ray.tmin;
   float tmax = ray.tmax;

@@ -42,6 +42,17 @@ struct SlotPrimitives {
   const Triangle& triangle(std::uint32_t slot, std::uint32_t /*id*/) const { return triangles[slot]; }
   /// The sphere at `slot` (global id `id`).
   const Sphere& sphere(std::uint32_t slot, std::uint32_t /*id*/) const { return spheres[slot]; }
+
+  /// The slots `ids` of `geometry` with the copies `copied_triangles` and `copied_spheres` that
+  /// copy_slot_primitives made for them; the id ranges of the kinds come from `geometry`.
+  SlotPrimitives(const std::uint32_t* slot_ids, const std::vector<Triangle>& copied_triangles,
+                 const std::vector<Sphere>& copied_spheres, const Geometry& g)
+      : ids(slot_ids),
+        triangles(copied_triangles.data()),
+        spheres(copied_spheres.data()),
+        triangle_count(static_cast<std::uint32_t>(g.triangles.size())),
+        sphere_end(triangle_count + static_cast<std::uint32_t>(g.spheres.size())),
+        geometry(&g) {}
 };
 
 /// Fills `triangles` and `spheres` with copies of the primitives `ids` names, slot by slot, for

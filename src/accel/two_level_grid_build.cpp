@@ -96,8 +96,6 @@ Vec3 TwoLevelGrid::top_hi(int x, int y, int z) const {
 void TwoLevelGrid::build() {
   // Ascending first, so that nothing below depends on the order `ids` came in.
   std::sort(m_ids.begin(), m_ids.end());
-  m_triangle_count = static_cast<std::uint32_t>(m_geometry.triangles.size());
-  m_sphere_end = m_triangle_count + static_cast<std::uint32_t>(m_geometry.spheres.size());
   for (std::uint32_t id : m_ids) m_bounds.extend(m_geometry.bounds(id));
   if (m_ids.empty() || m_bounds.empty()) {
     m_offsets.assign(1, 0u);  // no cells; traversal returns before looking at them

@@ -100,8 +100,6 @@ void UniformGrid::build(std::array<int, 3> resolution) {
   // Ascending first, so that nothing below depends on the order `ids` came in (order_by_cell
   // then makes the order spatial, ties by id).
   std::sort(m_ids.begin(), m_ids.end());
-  m_triangle_count = static_cast<std::uint32_t>(m_geometry.triangles.size());
-  m_sphere_end = m_triangle_count + static_cast<std::uint32_t>(m_geometry.spheres.size());
   for (std::uint32_t id : m_ids) m_bounds.extend(m_geometry.bounds(id));
   if (m_ids.empty() || m_bounds.empty()) {
     m_offsets.assign(1, 0u);  // no cells; traversal returns before looking at them

@@ -161,10 +161,8 @@ class IrregularGrid final : public TraversalAccelerator<IrregularGrid>, public C
   const Geometry& m_geometry;
   IrregularGridConfig m_config;
   IrregularGridData m_data;
-  std::vector<Triangle> m_triangles;   ///< parallel to m_data.ids where they are triangles (else unused)
-  std::vector<Sphere> m_spheres;       ///< parallel to m_data.ids where they are spheres (else unused)
-  std::uint32_t m_triangle_count = 0;  ///< global ids below this are triangles
-  std::uint32_t m_sphere_end = 0;      ///< global ids in [m_triangle_count, this) are spheres
+  std::vector<Triangle> m_triangles;  ///< parallel to m_data.ids where they are triangles (else unused)
+  std::vector<Sphere> m_spheres;      ///< parallel to m_data.ids where they are spheres (else unused)
   double m_build_seconds = 0.0;
   std::unique_ptr<Mailboxes> m_mailboxes;  ///< null when mailboxing is off
 };

@@ -150,8 +150,6 @@ class TwoLevelGrid final : public TraversalAccelerator<TwoLevelGrid>, public Cel
   std::vector<std::uint8_t> m_leaf_skip;  ///< per list or leaf cell: 0 = holds references, else distance to one
   std::vector<std::uint32_t> m_offsets;   ///< list or leaf cell c: m_refs[m_offsets[c] .. m_offsets[c + 1])
   std::vector<std::uint32_t> m_refs;      ///< positions in m_ids, leaf cell by leaf cell
-  std::uint32_t m_triangle_count = 0;     ///< global ids below this are triangles
-  std::uint32_t m_sphere_end = 0;         ///< global ids in [m_triangle_count, this) are spheres
   std::size_t m_leaf_cells = 0;
   std::size_t m_nonempty_leaf_cells = 0;
   double m_build_seconds = 0.0;

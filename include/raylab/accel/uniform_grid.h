@@ -135,8 +135,6 @@ class UniformGrid final : public TraversalAccelerator<UniformGrid>, public CellW
   std::vector<std::uint32_t> m_offsets;        ///< cell c holds m_refs[m_offsets[c] .. m_offsets[c + 1])
   std::vector<std::uint8_t> m_skip;            ///< per cell: 0 = holds references, else distance to one (capped)
   std::vector<std::uint32_t> m_refs;           ///< positions in m_ids, cell by cell (x fastest)
-  std::uint32_t m_triangle_count = 0;          ///< global ids below this are triangles
-  std::uint32_t m_sphere_end = 0;              ///< global ids in [m_triangle_count, this) are spheres
   std::size_t m_nonempty_cells = 0;
   double m_build_seconds = 0.0;
   std::unique_ptr<Mailboxes> m_mailboxes;  ///< null when mailboxing is off
