@@ -32,6 +32,7 @@
 #include "raylab/io/image_io.h"
 #include "raylab/io/scene_loader.h"
 #include "raylab/render/adaptive.h"
+#include "raylab/render/integrator.h"
 #include "raylab/render/progress.h"
 #include "raylab/render/renderer.h"
 #include "raylab/render/spd_protocol.h"
@@ -226,6 +227,10 @@ void add_tracing_options(CLI::App& cmd, RenderArgs& args) {
       ->check([](const std::string& v) { return v.starts_with('-') ? "the seed must not be negative" : ""; });
   cmd.add_option("--max-depth", args.settings.max_depth, "Ray tree depth; 1 = eye rays only (default 5)")
       ->check(CLI::Range(1, 64));
+  cmd.add_option("--integrator", args.settings.integrator,
+                 "What computes the light: whitted (mirror, glass and shadow rays toward the lights; SPD's) or "
+                 "path (Monte Carlo path tracing: global illumination); default: the scene's (docs/rendering.md)")
+      ->check(CLI::IsMember(std::vector<std::string>(integrator_names().begin(), integrator_names().end())));
 }
 
 // Renders that take long or take many: --passes, checkpoints, --max-memory, --frames, MPI.

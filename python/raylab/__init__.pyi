@@ -113,10 +113,12 @@ def render(
     height: int | None = None,
     spp: int | None = None,
     sampler: str | None = None,
+    integrator: str | None = None,
+    max_depth: int | None = None,
     accel: str = "bvh",
     threads: int | None = None,
 ) -> npt.NDArray[np.float32]:
-    """Linear (H, W, 3) radiance image of the scene."""
+    """Linear (H, W, 3) radiance image of the scene (integrator "whitted" or "path")."""
 
 def write_image(path: _Path, image: _Floats) -> None:
     """Writes an (H, W, 3) linear image as PNG, EXR or PFM by the extension."""

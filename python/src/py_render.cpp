@@ -8,11 +8,13 @@
 #include "numpy_views.h"
 #include "py_scene.h"
 #include "raylab/accel/two_level.h"
+#include "raylab/core/error.h"
 #include "raylab/io/image_io.h"
 #include "raylab/io/scene_loader.h"
 #include "raylab/query/camera_rays.h"
 #include "raylab/render/film.h"
 #include "raylab/render/image_size.h"
+#include "raylab/render/integrator.h"
 #include "raylab/render/renderer.h"
 
 namespace raylab::python {
@@ -45,14 +47,27 @@ Scene scene_of(const py::object& scene_or_path) {
 namespace {
 
 py::array_t<float> render_image(const py::object& scene_or_path, std::optional<int> width, std::optional<int> height,
-                                std::optional<int> spp, std::optional<std::string> sampler, const std::string& accel,
-                                const py::object& threads) {
+                                std::optional<int> spp, std::optional<std::string> sampler,
+                                std::optional<std::string> integrator, std::optional<int> max_depth,
+                                const std::string& accel, const py::object& threads) {
   Scene scene = scene_of(scene_or_path);
   // One side given: the other follows the scene's shape; both: the view widens, never crops.
   set_image_size(scene, width, height);
   RenderSettings& s = scene.settings;
   if (spp) s.spp = *spp;
   if (sampler) s.sampler = *sampler;
+  if (integrator) {
+    try {
+      check_integrator_name(*integrator);
+    } catch (const UsageError& e) {
+      throw py::value_error(std::string("integrator: ") + e.what());
+    }
+    s.integrator = *integrator;
+  }
+  if (max_depth) {
+    if (*max_depth < 1 || *max_depth > 64) throw py::value_error("max_depth: must be 1 to 64");
+    s.max_depth = *max_depth;
+  }
   if (s.width < 1 || s.height < 1) throw py::value_error("width, height: must be at least 1");
   if (s.spp < 1) throw py::value_error("spp: must be at least 1");
   check_sampling_settings(s);
@@ -108,11 +123,12 @@ py::array_t<float> pinhole(int width, int height, const std::array<float, 3>& ey
 void bind_render(py::module_& m) {
   m.def("render", &render_image, py::arg("scene"), py::kw_only(), py::arg("width") = py::none(),
         py::arg("height") = py::none(), py::arg("spp") = py::none(), py::arg("sampler") = py::none(),
-        py::arg("accel") = "bvh", py::arg("threads") = py::none(),
-        R"(Renders a scene (a Scene, a path or a built-in name) with the Whitted integrator and returns
-the linear radiance as a float32 (H, W, 3) array. Settings not given are the scene's own; ``width``
+        py::arg("integrator") = py::none(), py::arg("max_depth") = py::none(), py::arg("accel") = "bvh", py::arg("threads") = py::none(),
+        R"(Renders a scene (a Scene, a path or a built-in name) and returns the linear radiance as a
+float32 (H, W, 3) array. Settings not given are the scene's own; ``width``
 or ``height`` alone keeps the scene's shape, and both in another shape widen the view (never crop).
-``sampler``: as the command line's --sampler. Ctrl-C interrupts (KeyboardInterrupt).)");
+``sampler``, ``integrator`` ("whitted" or "path"), ``max_depth``: as the command line's --sampler,
+--integrator and --max-depth. Ctrl-C interrupts (KeyboardInterrupt).)");
   m.def("write_image", &write, py::arg("path"), py::arg("image"),
         R"(Writes a linear (H, W, 3) image: PNG (8-bit sRGB), EXR (float) or PFM by the extension. The file
 appears whole or not at all.)");

@@ -197,17 +197,19 @@ std::vector<std::pair<std::string, std::string>> image_settings(const RenderSett
   char radius[32];
   std::snprintf(radius, sizeof radius, "%.9g", static_cast<double>(s.filter_radius));
   namespace name = setting_name;
-  return {{name::kWidth, std::to_string(s.width)},
-          {name::kHeight, std::to_string(s.height)},
-          {name::kSpp, std::to_string(s.spp)},
-          {name::kSampler, sampler},
-          {name::kFilter, s.filter},
-          {name::kFilterRadius, radius},
-          {name::kSeed, std::to_string(s.seed)},
-          {name::kMaxDepth, std::to_string(s.max_depth)},
-          {name::kTileSize, std::to_string(tile_size)},
-          {name::kPasses, std::to_string(passes)},
-          {name::kAccel, accel}};
+  std::vector<std::pair<std::string, std::string>> settings = {{name::kWidth, std::to_string(s.width)},
+                                                               {name::kHeight, std::to_string(s.height)},
+                                                               {name::kSpp, std::to_string(s.spp)},
+                                                               {name::kSampler, sampler},
+                                                               {name::kFilter, s.filter},
+                                                               {name::kFilterRadius, radius},
+                                                               {name::kSeed, std::to_string(s.seed)},
+                                                               {name::kMaxDepth, std::to_string(s.max_depth)},
+                                                               {name::kTileSize, std::to_string(tile_size)},
+                                                               {name::kPasses, std::to_string(passes)},
+                                                               {name::kAccel, accel}};
+  if (s.integrator != "whitted") settings.emplace_back(name::kIntegrator, s.integrator);
+  return settings;
 }
 
 const std::string* saved_setting(const RenderCheckpoint& saved, const std::string& name) {

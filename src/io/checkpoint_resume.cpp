@@ -71,6 +71,7 @@ void fill_from_checkpoint(ResumableRequest& r, const RenderCheckpoint& saved, co
   from.fill(r.passes, name::kPasses, to_int);
   from.fill(s.seed, name::kSeed, [](const std::string& v) { return std::stoull(v); });
   from.fill(s.sampler, name::kSampler);
+  from.fill(s.integrator, name::kIntegrator);
   from.fill(s.filter, name::kFilter);
   from.fill(s.filter_radius, name::kFilterRadius, [](const std::string& v) { return std::stof(v); });
   from.fill(r.accel, name::kAccel);

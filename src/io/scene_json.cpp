@@ -12,6 +12,7 @@
 #include "raylab/io/read_file.h"
 #include "raylab/io/scene_loader.h"
 #include "raylab/io/texture_io.h"
+#include "raylab/render/integrator.h"
 #include "raylab/render/renderer.h"
 #include "raylab/sampling/filter.h"
 #include "raylab/scene/mesh_builder.h"
@@ -79,7 +80,7 @@ class SceneReader {
  private:
   void read_render(const Node& n) {
     n.check_keys({"width", "height", "spp", "sampler", "filter", "filter_radius", "aa_threshold", "aa_depth",
-                  "max_depth", "seed", "background", "ambient", "sky_gradient", "horizon"});
+                  "max_depth", "seed", "background", "ambient", "sky_gradient", "horizon", "integrator"});
     RenderSettings& s = m_scene.settings;
     s.width = static_cast<int>(n.integer("width", s.width, 1, 32768));
     s.height = static_cast<int>(n.integer("height", s.height, 1, 32768));
@@ -88,6 +89,7 @@ class SceneReader {
     for (std::string_view name : render_sampler_names()) samplers.push_back(name);
     s.sampler = n.choice("sampler", samplers, s.sampler);
     s.filter = n.choice("filter", filter_names(), s.filter);
+    s.integrator = n.choice("integrator", integrator_names(), s.integrator);
     s.filter_radius = static_cast<float>(n.real("filter_radius", 0.0, 0.0, 8.0));
     if (s.filter_radius != 0.f && s.filter_radius < 0.5f)
       n.fail_at("filter_radius", "'filter_radius' must be 0 (the filter's default) or at least 0.5");

@@ -17,8 +17,8 @@
 #include "raylab/core/rng.h"
 #include "raylab/core/stopwatch.h"
 #include "raylab/render/camera.h"
+#include "raylab/render/integrator.h"
 #include "raylab/render/renderer.h"
-#include "raylab/render/whitted.h"
 
 namespace raylab::detail {
 
@@ -54,19 +54,25 @@ class TileGrid {
 };
 
 /// Runs work items in parallel, each with a TraceContext whose statistics belong to the worker
-/// thread, so no counter is shared. Results must not depend on which thread runs an item.
+/// thread, so no counter is shared, and whose integrator is the scene's. Results must not depend
+/// on which thread runs an item.
 class RenderWorkers {
  public:
-  /// Workers for `scene` traced through `accel`, as many threads as `options` asks.
+  /// Workers for `scene` traced through `accel` with the integrator its settings name, as many
+  /// threads as `options` asks. Throws UsageError for an unknown integrator.
   RenderWorkers(const Scene& scene, const Accelerator& accel, const RenderOptions& options)
-      : m_scene(scene), m_accel(accel), m_count(options.count_traversal), m_arena(render_thread_count(options)) {}
+      : m_scene(scene),
+        m_accel(accel),
+        m_integrator(make_integrator(scene.settings.integrator, scene)),
+        m_count(options.count_traversal),
+        m_arena(render_thread_count(options)) {}
 
   /// Calls `fn(index, ctx)` for every index in [0, count), in parallel, one index per task.
   template <class Fn>
   void for_each(int count, Fn&& fn) {
     m_arena.execute([&] {
       tbb::parallel_for(tbb::blocked_range<int>(0, count, 1), [&](const tbb::blocked_range<int>& range) {
-        const TraceContext ctx{m_scene, m_accel, m_stats.local(), m_count};
+        const TraceContext ctx{m_scene, m_accel, m_stats.local(), m_count, ShadowFacing::kViewer, m_integrator.get()};
         for (int i = range.begin(); i != range.end(); ++i) fn(i, ctx);
       });
     });
@@ -83,22 +89,23 @@ class RenderWorkers {
                            items.begin() + static_cast<std::ptrdiff_t>(std::min(items.size(), i + batch)));
     }
     m_arena.execute([&] {
-      tbb::parallel_for_each(batches.begin(), batches.end(),
-                             [&](const std::vector<int>& work, tbb::feeder<std::vector<int>>& feeder) {
-                               const TraceContext ctx{m_scene, m_accel, m_stats.local(), m_count};
-                               std::vector<int> found;
-                               auto add = [&](int more) {
-                                 found.push_back(more);
-                                 if (found.size() >= static_cast<std::size_t>(batch)) {
-                                   feeder.add(std::move(found));
-                                   found.clear();
-                                 }
-                               };
-                               // Breadth first within the batch: what it finds is handed back
-                               // to the pool, where idle threads can take it.
-                               for (int item : work) fn(item, ctx, add);
-                               if (!found.empty()) feeder.add(std::move(found));
-                             });
+      tbb::parallel_for_each(
+          batches.begin(), batches.end(), [&](const std::vector<int>& work, tbb::feeder<std::vector<int>>& feeder) {
+            const TraceContext ctx{m_scene,           m_accel, m_stats.local(), m_count, ShadowFacing::kViewer,
+                                   m_integrator.get()};
+            std::vector<int> found;
+            auto add = [&](int more) {
+              found.push_back(more);
+              if (found.size() >= static_cast<std::size_t>(batch)) {
+                feeder.add(std::move(found));
+                found.clear();
+              }
+            };
+            // Breadth first within the batch: what it finds is handed back
+            // to the pool, where idle threads can take it.
+            for (int item : work) fn(item, ctx, add);
+            if (!found.empty()) feeder.add(std::move(found));
+          });
     });
   }
 
@@ -112,6 +119,7 @@ class RenderWorkers {
  private:
   const Scene& m_scene;
   const Accelerator& m_accel;
+  std::unique_ptr<Integrator> m_integrator;
   bool m_count;
   tbb::task_arena m_arena;
   tbb::enumerable_thread_specific<RenderStats> m_stats;
@@ -136,13 +144,20 @@ inline Color finite_radiance(const TraceContext& ctx, Color c) {
   return Color{0.f};
 }
 
-/// The radiance of the primary ray through image position (x, y), with every random choice along
-/// it seeded by `path_seed` (NaN or infinite radiance counted and replaced by black); `feature`
-/// (optional) receives what the ray hit first.
+/// The radiance of the primary ray through image position (x, y), computed by the context's
+/// integrator with every random choice along it drawn from `samples` (NaN or infinite radiance
+/// counted and replaced by black); `feature` (optional) receives what the ray hit first.
+inline Color trace_image_position(const TraceContext& ctx, const Camera& camera, float x, float y,
+                                  SampleSource& samples, PrimaryFeature* feature = nullptr) {
+  return finite_radiance(ctx, ctx.integrator->radiance(ctx, camera.generate(x, y), samples, feature));
+}
+
+/// trace_image_position with independent random numbers from `path_seed` (the adaptive loops,
+/// whose samples are not addressed by an index).
 inline Color trace_image_position(const TraceContext& ctx, const Camera& camera, float x, float y,
                                   std::uint64_t path_seed, PrimaryFeature* feature = nullptr) {
-  Pcg32 rng(path_seed);
-  return finite_radiance(ctx, WhittedIntegrator::trace(ctx, camera.generate(x, y), 1, RayKind::kPrimary, rng, feature));
+  SampleSource samples(path_seed);
+  return trace_image_position(ctx, camera, x, y, samples, feature);
 }
 
 }  // namespace raylab::detail

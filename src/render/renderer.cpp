@@ -13,6 +13,7 @@
 #include "raylab/core/thread_count.h"
 #include "raylab/render/adaptive.h"
 #include "raylab/render/camera.h"
+#include "raylab/render/integrator.h"
 #include "raylab/sampling/filter.h"
 #include "raylab/sampling/pixel_sampler.h"
 #include "render_workers.h"
@@ -33,6 +34,7 @@ RenderResult render_uniform(const Scene& scene, const Accelerator& accel, Film& 
                             const PixelSampler& sampler, const Filter& filter) {
   const Camera camera(scene.camera, film.width(), film.height());
   const TileGrid grid(film.width(), film.height(), options.tile_size);
+  const SampleDimensions dims(sampler);
   // Wider filters: each tile accumulates into its own sums (tile plus margin), added up in tile
   // order by develop(), so the image does not depend on scheduling.
   const int margin = filter_margin(filter);
@@ -81,7 +83,7 @@ RenderResult render_uniform(const Scene& scene, const Accelerator& accel, Film& 
       // Only this task changes tile t during this pass, so it works on a copy and commits it whole:
       // a checkpoint taken meanwhile sees the tile as it was after the previous pass.
       TileSums sums = progress.tiles[static_cast<std::size_t>(t)];
-      render_tile_samples(ctx, camera, sampler, filter, options.packets, grid.rect(t), first, end, sums);
+      render_tile_samples(ctx, camera, sampler, dims, filter, options.packets, grid.rect(t), first, end, sums);
       {
         const std::lock_guard lock(state_mutex);
         progress.tiles[static_cast<std::size_t>(t)] = std::move(sums);
@@ -133,6 +135,7 @@ std::vector<std::string_view> render_sampler_names() {
 }
 
 void check_sampling_settings(const RenderSettings& s) {
+  check_integrator_name(s.integrator);
   const std::string name = resolve_sampler_name(s);
   const std::vector<std::string_view> names = render_sampler_names();
   if (std::find(names.begin(), names.end(), name) == names.end()) {

@@ -11,6 +11,7 @@ void apply_settings_override(RenderSettings& s, const SettingsOverride& over) {
   if (over.max_depth) s.max_depth = *over.max_depth;
   if (over.seed) s.seed = *over.seed;
   if (over.sampler) s.sampler = *over.sampler;
+  if (over.integrator) s.integrator = *over.integrator;
   if (over.filter) s.filter = *over.filter;
   if (over.filter_radius) s.filter_radius = *over.filter_radius;
   if (over.aa_threshold) s.aa_threshold = *over.aa_threshold;

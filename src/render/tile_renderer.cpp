@@ -16,6 +16,7 @@ struct TileRenderer::State {
   State(const Scene& scene, const Accelerator& accel, const RenderOptions& options, const std::string& name)
       : camera(scene.camera, scene.settings.width, scene.settings.height),
         sampler(make_pixel_sampler(name, scene.settings.spp, scene.settings.seed)),
+        dimensions(*sampler),
         filter(make_filter(scene.settings.filter, scene.settings.filter_radius)),
         grid(scene.settings.width, scene.settings.height, options.tile_size),
         workers(scene, accel, options),
@@ -27,6 +28,7 @@ struct TileRenderer::State {
 
   Camera camera;
   std::unique_ptr<PixelSampler> sampler;
+  SampleDimensions dimensions;
   Filter filter;
   detail::TileGrid grid;
   detail::RenderWorkers workers;
@@ -74,8 +76,8 @@ void TileRenderer::run(TileJobSource& source) {
   s.workers.for_each(s.thread_count, [&](int, const TraceContext& ctx) {
     while (std::optional<TileJob> job = source.next()) {
       const auto start = std::chrono::steady_clock::now();
-      detail::render_tile_samples(ctx, s.camera, *s.sampler, s.filter, s.packets, s.grid.rect(job->tile), job->first,
-                                  job->end, job->sums);
+      detail::render_tile_samples(ctx, s.camera, *s.sampler, s.dimensions, s.filter, s.packets, s.grid.rect(job->tile),
+                                  job->first, job->end, job->sums);
       const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
       source.done(std::move(*job), took.count());
     }

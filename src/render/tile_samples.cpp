@@ -39,8 +39,8 @@ bool is_pixel_box(const Filter& f) { return f.kind() == FilterKind::kBox && f.ra
 int filter_margin(const Filter& f) { return is_pixel_box(f) ? 0 : static_cast<int>(std::ceil(f.radius() - 0.5f)); }
 
 void render_tile_samples(const TraceContext& ctx, const Camera& camera, const PixelSampler& sampler,
-                         const Filter& filter, bool packets, const PixelRect& rect, int first, int end,
-                         TileSums& sums) {
+                         const SampleDimensions& dims, const Filter& filter, bool packets, const PixelRect& rect,
+                         int first, int end, TileSums& sums) {
   const bool pixel_box = is_pixel_box(filter);
   // Sample i of pixel (px, py) has colour colour_of(i, x, y), at image position (x, y).
   auto add_pixel = [&](int px, int py, auto&& colour_of) {
@@ -58,7 +58,7 @@ void render_tile_samples(const TraceContext& ctx, const Camera& camera, const Pi
       }
     }
   };
-  if (packets) {
+  if (packets && ctx.integrator->traces_packets()) {
     // The same samples, seeds and sums in the same order; only the tracing is grouped.
     detail::TilePacketTracer tracer(ctx, camera, sampler, first, end);
     tracer.for_each_pixel(rect, [&](int px, int py, std::span<const Color> colours) {
@@ -69,7 +69,8 @@ void render_tile_samples(const TraceContext& ctx, const Camera& camera, const Pi
   for (int py = rect.y0; py < rect.y1; ++py) {
     for (int px = rect.x0; px < rect.x1; ++px) {
       add_pixel(px, py, [&](int i, float x, float y) {
-        return detail::trace_image_position(ctx, camera, x, y, sample_path_seed(sampler.seed(), px, py, i));
+        SampleSource samples(sample_path_seed(sampler.seed(), px, py, i), dims, px, py, i);
+        return detail::trace_image_position(ctx, camera, x, y, samples);
       });
     }
   }

@@ -8,6 +8,7 @@
 #include "raylab/render/render_progress.h"
 #include "raylab/sampling/filter.h"
 #include "raylab/sampling/pixel_sampler.h"
+#include "raylab/sampling/sample_dimensions.h"
 #include "render_workers.h"
 
 namespace raylab::detail {
@@ -25,8 +26,11 @@ void check_resumable(const RenderProgress& p, int width, int height, int tile_si
 
 /// Samples [first, end) of every pixel of tile `rect` added to `sums` (which covers the tile and
 /// its margin), in the order of a render in one go: pixels row-major, each pixel's samples in
-/// order. With `packets`, primary and shadow rays are traced in groups (same bits).
+/// order. A sample's path draws its random numbers from `dims` (made from `sampler`). With
+/// `packets`, and an integrator that traces packets, primary and shadow rays are traced in groups
+/// (same bits).
 void render_tile_samples(const TraceContext& ctx, const Camera& camera, const PixelSampler& sampler,
-                         const Filter& filter, bool packets, const PixelRect& rect, int first, int end, TileSums& sums);
+                         const SampleDimensions& dims, const Filter& filter, bool packets, const PixelRect& rect,
+                         int first, int end, TileSums& sums);
 
 }  // namespace raylab::detail

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "light/shape_sampling.h"
 #include "raylab/geometry/shading.h"
+#include "raylab/render/optics.h"
 
 namespace raylab {
 namespace {
@@ -79,11 +81,7 @@ bool sample_light(const Light& light, int grid, int sx, int sy, const ShadingPoi
       if (light.kind == Light::Kind::kQuad) {
         target = light.position + light.edge_u * u + light.edge_v * v;
       } else {
-        // Uniform point on the sphere (z = 1 - 2u, azimuth 2 pi v).
-        const float z = 1.f - 2.f * u;
-        const float r = std::sqrt(std::max(0.f, 1.f - z * z));
-        const float phi = 6.2831853f * v;
-        target = light.position + Vec3{r * std::cos(phi), r * std::sin(phi), z} * light.radius;
+        target = detail::point_on_sphere(light.position, light.radius, u, v);
       }
     }
     const Vec3 to = target - p;
@@ -135,30 +133,17 @@ Color WhittedIntegrator::background(const RenderSettings& s, Vec3 dir) {
   return lerp(s.horizon, s.background, std::sqrt(up));
 }
 
-float WhittedIntegrator::fresnel_dielectric(float cos_i, float eta_i, float eta_t) {
-  cos_i = std::clamp(cos_i, 0.f, 1.f);
-  const float sin_t = eta_i / eta_t * std::sqrt(std::max(0.f, 1.f - cos_i * cos_i));
-  if (sin_t >= 1.f) return 1.f;
-  const float cos_t = std::sqrt(std::max(0.f, 1.f - sin_t * sin_t));
-  const float r_parallel = (eta_t * cos_i - eta_i * cos_t) / (eta_t * cos_i + eta_i * cos_t);
-  const float r_perpendicular = (eta_i * cos_i - eta_t * cos_t) / (eta_i * cos_i + eta_t * cos_t);
-  return 0.5f * (r_parallel * r_parallel + r_perpendicular * r_perpendicular);
-}
-
-bool WhittedIntegrator::refract(Vec3 d, Vec3 n, float eta, Vec3& out) {
-  const float cos_i = -dot(d, n);
-  const float sin2_t = eta * eta * std::max(0.f, 1.f - cos_i * cos_i);
-  if (sin2_t >= 1.f) return false;
-  out = d * eta + n * (eta * cos_i - std::sqrt(1.f - sin2_t));
-  return true;
-}
-
 bool WhittedIntegrator::is_single_sample(const Light& light) { return sample_grid(light) == 1; }
 
 bool WhittedIntegrator::single_sample_shadow_ray(const Light& light, const SurfaceInteraction& si, ShadowFacing facing,
                                                  Ray& shadow) {
   LightSample ls;
   return sample_light(light, 1, 0, 0, shading_point(si, facing), nullptr, ls, shadow);
+}
+
+Color WhittedIntegrator::radiance(const TraceContext& ctx, const Ray& ray, SampleSource& samples,
+                                  PrimaryFeature* feature) const {
+  return trace(ctx, ray, 1, RayKind::kPrimary, samples.rng(), feature);
 }
 
 Color WhittedIntegrator::trace(const TraceContext& ctx, Ray ray, int depth, RayKind kind, Pcg32& rng,

@@ -1,4 +1,5 @@
 #include "cmj_sampler.h"
+#include "permutation.h"
 
 #include <cstdint>
 #include <utility>
@@ -10,50 +11,6 @@
 namespace raylab {
 
 namespace {
-
-/// Feistel rounds of the permutations: must be even (see keyed_bijection). Eight rather than
-/// the textbook four, because the domains here are tiny (a few bits), where four rounds leave a
-/// visible bias among the possible permutations (measured: with 8 sub-intervals, 4 rounds
-/// reach 12k of the 40320 orders in 50k pixels, 8 rounds 25k, a uniform choice 29k).
-constexpr int kFeistelRounds = 8;
-
-/// A keyed bijection of the `bits`-bit integers: a Feistel network on the value's high and low
-/// halves, whose round function is a strong 64-bit hash of the key and one half. Each round is
-/// invertible whatever the hash, so the whole is a permutation; with a good hash, a handful of
-/// rounds makes it close to a uniformly random one. For odd widths the halves differ by a bit
-/// and swap roles every round, so an even round count restores the original split.
-std::uint32_t keyed_bijection(std::uint32_t v, int bits, std::uint64_t key) {
-  int hi_bits = (bits + 1) / 2;
-  int lo_bits = bits / 2;
-  std::uint32_t hi = v >> lo_bits;
-  std::uint32_t lo = v & ((1u << lo_bits) - 1u);
-  for (int round = 0; round < kFeistelRounds; ++round) {
-    const std::uint64_t f = mix64(key ^ (static_cast<std::uint64_t>(round) << 32 | lo));
-    const std::uint32_t next_lo = (hi ^ static_cast<std::uint32_t>(f)) & ((1u << hi_bits) - 1u);
-    hi = lo;
-    lo = next_lo;
-    std::swap(hi_bits, lo_bits);
-  }
-  // A round xors one half with a function of the other: once both halves have two bits or
-  // more, that is always an even permutation. A final key-dependent rotation of the cycle
-  // 0 -> 1 -> ... -> mask (odd for odd shifts) lets the odd permutations appear too.
-  const std::uint32_t mask = (1u << bits) - 1u;
-  return (((hi << lo_bits) | lo) + static_cast<std::uint32_t>(mix64(~key))) & mask;
-}
-
-/// Element `i` (0 <= i < n) of a pseudo-random permutation of [0, n) keyed by `key`: the keyed
-/// bijection of the next power of two, walked along its cycle until it lands below n. The walk
-/// ends because the cycle through i returns to i; on average it takes fewer than two steps.
-int permute(int i, int n, std::uint64_t key) {
-  if (n <= 1) return 0;
-  int bits = 0;
-  while ((1u << bits) < static_cast<std::uint32_t>(n)) ++bits;
-  auto v = static_cast<std::uint32_t>(i);
-  do {
-    v = keyed_bijection(v, bits, key);
-  } while (v >= static_cast<std::uint32_t>(n));
-  return static_cast<int>(v);
-}
 
 /// Independent keys for the pixel's separate random choices (one mix of the pixel's key each).
 std::uint64_t sub_key(std::uint64_t pixel_key, std::uint64_t which) {
@@ -78,14 +35,14 @@ Sample2 CmjSampler::sample(int px, int py, int index) const {
       hash_seed(seed() ^ kCmjSamplerSalt, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py));
   // Which cell sample `index` goes to is shuffled too, so that a prefix of the indices is not
   // confined to the bottom rows.
-  const int cell = permute(index, n, sub_key(pixel_key, 1));
+  const int cell = detail::permute(index, n, sub_key(pixel_key, 1));
   const int col = cell % m_cols;
   const int row = cell / m_cols;
   // Cell (col, row) holds x-interval col * rows + sub_x and y-interval row * cols + sub_y. The
   // sub-interval depends on the other coordinate through one permutation shared by the whole
   // column (row), so every column (row) uses each of its sub-intervals exactly once.
-  const int sub_x = permute(row, m_rows, sub_key(pixel_key, 2));
-  const int sub_y = permute(col, m_cols, sub_key(pixel_key, 3));
+  const int sub_x = detail::permute(row, m_rows, sub_key(pixel_key, 2));
+  const int sub_y = detail::permute(col, m_cols, sub_key(pixel_key, 3));
   // The jitter within the sub-interval: 64 hashed bits, half for each axis (SplitMix64 style).
   const std::uint64_t jitter = sub_key(sub_key(pixel_key, 4), static_cast<std::uint64_t>(index));
   const float jx = bits_to_unit_float(static_cast<std::uint32_t>(jitter));

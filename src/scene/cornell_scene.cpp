@@ -58,6 +58,9 @@ Scene make_cornell_scene() {
   const std::uint32_t green = scene.add_material(matte("green", {0.14f, 0.45f, 0.091f}));
   Material lamp = matte("light", {0.78f, 0.78f, 0.78f});
   lamp.emission = {1.f, 0.85f, 0.6f};
+  // The path integrator's radiance: about that of the classic path-traced Cornell box's lamp
+  // (luminance 12-13), which lights the box to a full exposure. Whitted shows `emission` alone.
+  lamp.emission_strength = 15.f;
   const std::uint32_t light_material = scene.add_material(lamp);
 
   add_faces(scene, std::span<const Face>(&kFloor, 1), scene.add_object("floor", white));
@@ -71,8 +74,11 @@ Scene make_cornell_scene() {
   // The published light: 130 mm x 105 mm, 0.1 mm below the ceiling so that it is not inside it.
   const Vec3 corner{343.f, 548.7f, 227.f};
   const Vec3 edge_u{-130.f, 0.f, 0.f}, edge_v{0.f, 0.f, 105.f};
-  scene.geometry.add(Quad{corner, edge_u, edge_v}, scene.add_object("light", light_material));
+  const std::uint32_t lamp_object = scene.add_object("light", light_material);
+  // Edges in this order give the quad a downward normal: the side the lamp emits to under path.
+  scene.geometry.add(Quad{corner, edge_v, edge_u}, lamp_object);
   Light area;
+  area.object = static_cast<std::int32_t>(lamp_object);  // under path the quad itself is the light
   area.kind = Light::Kind::kQuad;
   area.position = corner;
   area.edge_u = edge_u;

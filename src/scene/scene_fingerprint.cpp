@@ -76,6 +76,17 @@ void hash_material(Hasher& h, const Material& m) {
       for (int x = 0; x < t.image->width(); ++x) h.vec(t.image->texel(x, y));
     }
   }
+  // The physically based members only where they differ from the defaults, so that the
+  // fingerprints of scenes from before they existed (and their checkpoints) stay valid.
+  const Material plain;
+  if (m.model != plain.model || m.roughness != plain.roughness || m.metallic != plain.metallic ||
+      m.transmission != plain.transmission || !(m.conductor_eta == plain.conductor_eta) ||
+      !(m.conductor_k == plain.conductor_k) || m.emission_strength != plain.emission_strength) {
+    h.number(static_cast<int>(m.model));
+    for (float f : {m.roughness, m.metallic, m.transmission, m.emission_strength}) h.number(f);
+    h.vec(m.conductor_eta);
+    h.vec(m.conductor_k);
+  }
 }
 
 void hash_light(Hasher& h, const Light& l) {
@@ -84,6 +95,7 @@ void hash_light(Hasher& h, const Light& l) {
   h.number(l.radius);
   h.number(l.falloff);
   h.number(l.samples);
+  if (l.object >= 0) h.number(l.object);  // only when set: older fingerprints stay valid
 }
 
 void hash_camera(Hasher& h, const CameraSpec& c) {
@@ -116,6 +128,9 @@ void hash_settings(Hasher& h, const RenderSettings& s) {
   h.number(s.seed);
   for (Vec3 c : {s.background, s.horizon, s.ambient}) h.vec(c);
   h.number(s.sky_gradient);
+  // Only when not the first integrator, so that fingerprints (and checkpoints) from before the
+  // choice existed stay valid.
+  if (s.integrator != "whitted") h.text(s.integrator);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "raylab/accel/factory.h"
+#include "raylab/render/optics.h"
 #include "raylab/render/renderer.h"
 #include "raylab/render/whitted.h"
 #include "trace_one.h"
@@ -173,14 +174,14 @@ TEST(WhittedRefraction, RefractObeysSnellsLaw) {
       SCOPED_TRACE(::testing::Message() << "eta_t " << eta_t << " angle " << deg);
       const Vec3 d = downward(deg * kDeg);
       Vec3 t;
-      ASSERT_TRUE(WhittedIntegrator::refract(d, n, 1.f / eta_t, t));
+      ASSERT_TRUE(refract(d, n, 1.f / eta_t, t));
       EXPECT_NEAR(length(t), 1.f, 1e-5f);
       EXPECT_LT(t.y, 0.f);                         // carries on into the medium
       EXPECT_NEAR(t.z, 0.f, 1e-7f);                // stays in the plane of incidence
       EXPECT_NEAR(t.x * eta_t, d.x * 1.f, 1e-5f);  // sin(theta_t) eta_t = sin(theta_i) eta_i
       // Leaving through a parallel face restores the original direction.
       Vec3 back;
-      ASSERT_TRUE(WhittedIntegrator::refract(t, n, eta_t, back));
+      ASSERT_TRUE(refract(t, n, eta_t, back));
       expect_color_near(back, d, 1e-5f);
     }
   }
@@ -192,22 +193,22 @@ TEST(WhittedRefraction, TotalInternalReflectionBeyondTheCriticalAngle) {
   const float critical = std::asin(1.f / ior) / kDeg;  // 41.81 degrees
   Vec3 t;
   for (float deg : {0.f, 20.f, 41.f}) {
-    EXPECT_TRUE(WhittedIntegrator::refract(downward(deg * kDeg), n, ior, t)) << deg;
-    EXPECT_LT(WhittedIntegrator::fresnel_dielectric(std::cos(deg * kDeg), ior, 1.f), 1.f) << deg;
+    EXPECT_TRUE(refract(downward(deg * kDeg), n, ior, t)) << deg;
+    EXPECT_LT(fresnel_dielectric(std::cos(deg * kDeg), ior, 1.f), 1.f) << deg;
   }
   for (float deg : {critical + 0.1f, 50.f, 70.f, 89.f}) {
-    EXPECT_FALSE(WhittedIntegrator::refract(downward(deg * kDeg), n, ior, t)) << deg;
-    EXPECT_EQ(WhittedIntegrator::fresnel_dielectric(std::cos(deg * kDeg), ior, 1.f), 1.f) << deg;
+    EXPECT_FALSE(refract(downward(deg * kDeg), n, ior, t)) << deg;
+    EXPECT_EQ(fresnel_dielectric(std::cos(deg * kDeg), ior, 1.f), 1.f) << deg;
   }
 }
 
 TEST(WhittedRefraction, FresnelAtNormalIncidenceIsTheSchlickR0) {
   for (float n : {1.33f, 1.5f, 2.4f}) {
     const float r0 = ((n - 1.f) / (n + 1.f)) * ((n - 1.f) / (n + 1.f));
-    EXPECT_NEAR(WhittedIntegrator::fresnel_dielectric(1.f, 1.f, n), r0, 1e-6f);
-    EXPECT_NEAR(WhittedIntegrator::fresnel_dielectric(1.f, n, 1.f), r0, 1e-6f);  // same from inside
+    EXPECT_NEAR(fresnel_dielectric(1.f, 1.f, n), r0, 1e-6f);
+    EXPECT_NEAR(fresnel_dielectric(1.f, n, 1.f), r0, 1e-6f);  // same from inside
   }
-  EXPECT_NEAR(WhittedIntegrator::fresnel_dielectric(0.f, 1.f, 1.5f), 1.f, 1e-6f);  // grazing
+  EXPECT_NEAR(fresnel_dielectric(0.f, 1.f, 1.5f), 1.f, 1e-6f);  // grazing
 }
 
 // A glass slab between y = -1 and y = 0 (outward normals), and a small emissive target below.

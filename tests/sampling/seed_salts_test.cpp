@@ -23,13 +23,16 @@ TEST(SeedSalts, KeepTheValuesTheImagesWereMadeWith) {
   EXPECT_EQ(kAdaptiveCornersPathSalt, 0xc0e7e5ull);
   EXPECT_EQ(kRaySetLightStream, 1u);
   EXPECT_EQ(kRaySetBounceStream, 2u);
+  EXPECT_EQ(kSampleDimensionSalt, 0xd1e5a3b7c0f24689ull);
+  EXPECT_EQ(kDimensionShuffleSalt, 0x6b43a9b5e1f0d27cull);
+  EXPECT_EQ(kDeepDimensionSalt, 0x2f8e6d4c1a0b9375ull);
 }
 
 TEST(SeedSalts, AreAllDistinct) {
   // The header checks this at compile time; this says so again where a reader of the tests looks.
   const std::set<std::uint64_t> distinct(kAllSeedSalts.begin(), kAllSeedSalts.end());
   EXPECT_EQ(distinct.size(), kAllSeedSalts.size());
-  EXPECT_EQ(kAllSeedSalts.size(), 11u) << "a new salt belongs in kAllSeedSalts and in the test above";
+  EXPECT_EQ(kAllSeedSalts.size(), 14u) << "a new salt belongs in kAllSeedSalts and in the test above";
 }
 
 }  // namespace

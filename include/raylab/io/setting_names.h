@@ -17,6 +17,9 @@ inline constexpr char kMaxDepth[] = "max depth";          ///< ray tree depth
 inline constexpr char kTileSize[] = "tile size";          ///< tile side in pixels
 inline constexpr char kPasses[] = "passes";               ///< passes over the image
 inline constexpr char kAccel[] = "accel";                 ///< the acceleration structure
+/// The integrator, recorded only when it is not "whitted" (so checkpoints written before there
+/// was a choice read as Whitted renders, which they were).
+inline constexpr char kIntegrator[] = "integrator";
 // The camera parts given over the scene's (CameraOverride), recorded only when given.
 inline constexpr char kUpAxis[] = "up axis";          ///< --up: "z", "-y", ...
 inline constexpr char kCameraFrom[] = "camera from";  ///< --camera-from: "X,Y,Z"

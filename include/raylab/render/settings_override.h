@@ -23,6 +23,9 @@ struct SettingsOverride {
   std::optional<float> filter_radius;  ///< filter half-width in pixels
   std::optional<float> aa_threshold;   ///< adaptive samplers: refinement contrast
   std::optional<int> aa_depth;         ///< adaptive samplers: subdivision depth
+  // Later members last, with initialisers, so that positional initialisers of the members above
+  // stay valid (and warning-free).
+  std::optional<std::string> integrator{};  ///< integrator name (as --integrator)
 };
 
 /// Sets every member `over` gives on `settings`, leaving the others as they are; a sampler that

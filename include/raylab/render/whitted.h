@@ -6,44 +6,12 @@
 #include <cstdint>
 #include <span>
 
-#include "raylab/accel/accelerator.h"
 #include "raylab/core/rng.h"
-#include "raylab/core/stats.h"
 #include "raylab/geometry/shading.h"
-#include "raylab/scene/scene.h"
+#include "raylab/render/integrator.h"
+#include "raylab/render/trace_context.h"
 
 namespace raylab {
-
-/// Which normal decides whether a surface faces a light (the SPD testing procedure's rule 10: "a
-/// shadow ray is not generated if the surface normal points away from the light"). The rule can
-/// be read two ways, and published ray counts differ by which one their tracer followed.
-enum class ShadowFacing : std::uint8_t {
-  /// The normal turned toward the arriving ray: a surface is lit from the side the ray sees. At a
-  /// hit on the inside of a glass sphere, shadow rays go toward the lights on the inner side of
-  /// the tangent plane there.
-  kViewer = 0,
-  /// The primitive's own (outward) normal, whichever side the ray came from. At a hit on the
-  /// inside of a glass sphere no shadow ray goes toward a light on the inner side of the tangent
-  /// plane (behind the surface, seen from outside); one goes toward each light on the outer side,
-  /// and is counted, but adds nothing: the side the ray sees faces away from that light.
-  kOutward,
-};
-
-/// Everything one thread needs to trace: the scene, its structure, whether to count traversal
-/// work, where to count, and the facing rule for shadow rays.
-struct TraceContext {
-  const Scene& scene;
-  const Accelerator& accel;
-  RenderStats& stats;
-  bool count_traversal = false;                        ///< use the counted kernels (slower; for --stats)
-  ShadowFacing shadow_facing = ShadowFacing::kViewer;  ///< which normal must face a light for a shadow ray
-};
-
-/// What a primary ray met first: the features adaptive sampling compares between samples.
-struct PrimaryFeature {
-  std::int32_t object = -1;    ///< object id of the first hit; -1 when the ray left the scene
-  Vec3 normal{0.f, 0.f, 0.f};  ///< unit shading normal there (zero when nothing was hit)
-};
 
 /// A light's shadow test decided before shading, for WhittedIntegrator::shade: the packet path
 /// traces the shadow rays of a group of hit points together and passes the answers in.
@@ -65,8 +33,16 @@ enum class ShadowAnswer : std::uint8_t {
 ///    T (1 - F)); without it the reflection ray carries the reflectivity alone. Total internal
 ///    reflection sends all of T to the reflection ray.
 ///  - Area lights: `Light::samples` stratified shadow rays, randomised by `rng`.
-class WhittedIntegrator {
+class WhittedIntegrator final : public Integrator {
  public:
+  /// "whitted".
+  std::string_view name() const override { return "whitted"; }
+  /// trace(ctx, ray, 1, RayKind::kPrimary, samples.rng(), feature).
+  Color radiance(const TraceContext& ctx, const Ray& ray, SampleSource& samples,
+                 PrimaryFeature* feature = nullptr) const override;
+  /// True: the packet path gives the same bits (packet_tracing.h).
+  bool traces_packets() const override { return true; }
+
   /// The deepest ray tree any render traces, whatever RenderSettings::max_depth says (the scene
   /// files and the command line accept 1 to 64 as well): the integrator recurses once per level.
   static constexpr int kMaxDepth = 64;
@@ -96,14 +72,6 @@ class WhittedIntegrator {
 
   /// The background seen by a ray leaving in direction `dir`.
   static Color background(const RenderSettings& s, Vec3 dir);
-
-  /// Fresnel reflectance of an unpolarised ray at cosine `cos_i` (> 0) going from index `eta_i`
-  /// into `eta_t`; 1 for total internal reflection.
-  static float fresnel_dielectric(float cos_i, float eta_i, float eta_t);
-
-  /// Refracts unit direction `d` through unit normal `n` (facing against `d`) with relative index
-  /// eta = eta_i / eta_t; returns false on total internal reflection.
-  static bool refract(Vec3 d, Vec3 n, float eta, Vec3& out);
 };
 
 }  // namespace raylab

@@ -60,11 +60,23 @@ inline constexpr std::uint64_t kRaySetLightStream = 1;
 /// stream tag, hashed after (pixel, seed), apart from the same hit's light sample.
 inline constexpr std::uint64_t kRaySetBounceStream = 2;
 
+/// The seeds of the twin samplers that give a path its dimension pairs beyond the pixel
+/// position (SampleDimensions), apart from the pixel sampler's own seed.
+inline constexpr std::uint64_t kSampleDimensionSalt = 0xd1e5a3b7c0f24689ull;
+
+/// The shuffle of sample indices per dimension pair (SampleDimensions), so that sample i's
+/// stratum in one pair says nothing of its stratum in another.
+inline constexpr std::uint64_t kDimensionShuffleSalt = 0x6b43a9b5e1f0d27cull;
+
+/// The independent numbers of the dimension pairs past the stratified ones (SampleDimensions).
+inline constexpr std::uint64_t kDeepDimensionSalt = 0x2f8e6d4c1a0b9375ull;
+
 /// Every salt and stream tag above, for the distinctness check; a new one must be added here.
-inline constexpr std::array kAllSeedSalts = {kUnsaltedSeed,           kRandomSamplerSalt, kCmjSamplerSalt,
-                                             kSobolSamplerSalt,       kSamplePathSalt,    kMultiJitteredPatternSalt,
-                                             kAdaptiveBaseSampleSalt, kAdaptivePathSalt,  kAdaptiveCornersPathSalt,
-                                             kRaySetLightStream,      kRaySetBounceStream};
+inline constexpr std::array kAllSeedSalts = {kUnsaltedSeed,           kRandomSamplerSalt,  kCmjSamplerSalt,
+                                             kSobolSamplerSalt,       kSamplePathSalt,     kMultiJitteredPatternSalt,
+                                             kAdaptiveBaseSampleSalt, kAdaptivePathSalt,   kAdaptiveCornersPathSalt,
+                                             kRaySetLightStream,      kRaySetBounceStream, kSampleDimensionSalt,
+                                             kDimensionShuffleSalt,   kDeepDimensionSalt};
 
 // Two equal values would make two streams draw the same numbers.
 static_assert(

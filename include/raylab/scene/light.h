@@ -2,6 +2,8 @@
 /// \file
 /// Light sources: point, directional, and spherical and quad area lights.
 
+#include <cstdint>
+
 #include "raylab/core/vec3.h"
 
 namespace raylab {
@@ -20,6 +22,10 @@ struct Light {
   Color intensity{1.f, 1.f, 1.f};  ///< colour times strength
   bool falloff = false;            ///< divide by squared distance
   int samples = 16;                ///< shadow rays per shading point for area lights (a square is used)
+  /// The scene object that draws this light's surface (an emissive quad where a quad light is),
+  /// or -1. The path integrator, for which an emitter is geometry, lights the scene from that
+  /// object and skips this entry; Whitted samples this entry and shows the object.
+  std::int32_t object = -1;
 };
 
 }  // namespace raylab

@@ -2,11 +2,13 @@
 /// \file
 /// Whitted/Phong materials, the procedural checker and zone-plate textures and image textures.
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
 
 #include "raylab/core/vec3.h"
+#include "raylab/scene/metals.h"
 #include "raylab/scene/texture_image.h"
 
 namespace raylab {
@@ -56,9 +58,22 @@ struct Texture {
   std::shared_ptr<const TextureImage> image;
 };
 
+/// The scattering model a material names, as its source gave it. The Whitted integrator shades
+/// every model through the Phong members below; the path integrator maps each onto its BSDFs
+/// (render/material_bsdf.h, docs/rendering.md), Phong included.
+enum class MaterialModel : std::uint8_t {
+  kPhong = 0,          ///< Whitted's: kd, ks, shininess, reflectivity, transmittance, ior (NFF, MTL, old files)
+  kDiffuse,            ///< Lambertian: `color`
+  kConductor,          ///< metal: complex index `conductor_eta`, `conductor_k`, times `color`; `roughness`
+  kDielectric,         ///< glass: `ior`, `roughness`; `color` tints the transmitted light
+  kPlastic,            ///< diffuse `color` under a dielectric coat of index `ior` and `roughness`
+  kMetallicRoughness,  ///< glTF 2.0: `color` (base), `metallic`, `roughness`, `ior`, `transmission`
+};
+
 /// Surface response in the spirit of Whitted (1980) and the NFF `f` line: a Phong-lit colour
-/// plus perfect mirror reflection and perfect refraction. Defaults give a matte grey. Every
-/// member has a default, so that a designated initialiser names only what differs from it.
+/// plus perfect mirror reflection and perfect refraction, and the physically based models of
+/// MaterialModel. Defaults give a matte grey. Every member has a default, so that a designated
+/// initialiser names only what differs from it.
 struct Material {
   std::string name;               ///< for messages and scene files
   Color color{0.7f, 0.7f, 0.7f};  ///< base (diffuse) colour
@@ -71,6 +86,20 @@ struct Material {
   Color emission{0.f, 0.f, 0.f};  ///< light emitted towards the viewer, added unshadowed
   Texture texture{};              ///< optional variation of `color` (checker or image)
   bool fresnel = true;            ///< weight reflection/refraction of dielectrics by Fresnel
+
+  // The physically based models (the Whitted integrator reads none of these).
+
+  MaterialModel model = MaterialModel::kPhong;  ///< which model the members describe
+  /// Perceptual roughness in [0, 1] (glTF's): the GGX alpha is its square; 0 is perfectly smooth.
+  float roughness = 0.f;
+  float metallic = 0.f;                ///< kMetallicRoughness: 0 dielectric, 1 metal (fractions mix the two)
+  float transmission = 0.f;            ///< kMetallicRoughness: KHR_materials_transmission's factor
+  Color conductor_eta = kGoldIor.eta;  ///< kConductor: real part of the index (default gold)
+  Color conductor_k = kGoldIor.k;      ///< kConductor: imaginary part (default gold)
+  /// The path integrator's emitted radiance is emission * emission_strength (glTF's
+  /// KHR_materials_emissive_strength, Blender's Strength). Whitted adds `emission` alone: its
+  /// image is a display colour, not radiance, and a strength would blow it out.
+  float emission_strength = 1.f;
 };
 
 /// The diffuse colour of `m` at surface coordinates (u, v): the material colour, varied by its

@@ -3,6 +3,7 @@
 /// The scene model: plain data shared by loaders, accelerators and the renderer.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,8 @@
 #include "raylab/scene/render_settings.h"
 
 namespace raylab {
+
+struct Environment;
 
 /// A named group of primitives sharing a material (a mesh, a sphere, a floor).
 struct SceneObject {
@@ -37,6 +40,10 @@ struct Scene {
   std::vector<SceneObject> objects;
   std::vector<Material> materials;
   std::vector<Light> lights;
+  /// The light arriving from everywhere (a constant colour or a lat-long image, environment.h):
+  /// the path integrator lights the scene with it and shows it behind everything. Null: the
+  /// background of `settings` (its colour or sky gradient) stands for it.
+  std::shared_ptr<const Environment> environment;
   /// The camera of a still image (and of a scene file's `camera` object, path or not).
   CameraSpec camera;
   /// The camera of an animation, frame by frame; empty when the scene is a still.

@@ -1,0 +1,45 @@
+#pragma once
+/// \file
+/// The dimensions of a camera sample beyond its position in the pixel: what a path tracer's
+/// random decisions (light choice, light point, scattering direction, Russian roulette) draw
+/// from, addressed like the position by (pixel, sample index), so that an image is the same for
+/// any thread count, tile order, MPI rank count and across interrupt and resume.
+///
+/// Layout: pair 0 is the pixel position, from the render's pixel sampler itself. Pair k >= 1
+/// comes from a twin of that sampler (same kind, same spp, its own seed), with the sample
+/// indices shuffled per pair and pixel: within one pair the spp samples of a pixel keep the
+/// sampler's stratification (jittered strata, cmj's n-rooks, Sobol's (0,2)-net), and between
+/// pairs they are independent, as with pbrt's padded samplers. Samplers that place every pixel's
+/// samples alike (center, regular) have random twins (random, jittered): a path needs random
+/// numbers. Pairs from kStratifiedPairs on are independent uniform numbers.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "raylab/sampling/pixel_sampler.h"
+
+namespace raylab {
+
+/// The dimension pairs of every camera sample of a render (see the file comment).
+class SampleDimensions {
+ public:
+  /// Pairs 1 .. kStratifiedPairs - 1 are stratified; later pairs are independent numbers.
+  static constexpr int kStratifiedPairs = 32;
+
+  /// The pairs of the samples that `pixel_sampler` places.
+  explicit SampleDimensions(const PixelSampler& pixel_sampler);
+  ~SampleDimensions();
+  SampleDimensions(SampleDimensions&&) noexcept;
+  SampleDimensions& operator=(SampleDimensions&&) noexcept;
+
+  /// Pair `k` (>= 1) of sample `index` of pixel (px, py), in [0, 1)^2.
+  Sample2 pair(int k, int px, int py, int index) const;
+
+ private:
+  std::vector<std::unique_ptr<PixelSampler>> m_twins;  // m_twins[k - 1] gives pair k
+  int m_spp;
+  std::uint64_t m_seed;
+};
+
+}  // namespace raylab

@@ -1,0 +1,31 @@
+#include "raylab/render/integrator.h"
+
+#include <array>
+
+#include "raylab/core/error.h"
+#include "raylab/render/whitted.h"
+
+namespace raylab {
+namespace {
+
+constexpr std::array<std::string_view, 1> kNames = {"whitted"};
+
+}  // namespace
+
+std::span<const std::string_view> integrator_names() { return kNames; }
+
+void check_integrator_name(std::string_view name) {
+  for (std::string_view n : kNames) {
+    if (n == name) return;
+  }
+  std::string list;
+  for (std::string_view n : kNames) list += (list.empty() ? "" : ", ") + std::string(n);
+  throw UsageError("unknown integrator '" + std::string(name) + "' (valid: " + list + ")");
+}
+
+std::unique_ptr<Integrator> make_integrator(std::string_view name, const Scene&) {
+  check_integrator_name(name);
+  return std::make_unique<WhittedIntegrator>();
+}
+
+}  // namespace raylab

@@ -1,0 +1,49 @@
+#include "raylab/sampling/sample_dimensions.h"
+
+#include <string_view>
+
+#include "permutation.h"
+#include "raylab/core/rng.h"
+#include "raylab/sampling/seed_salts.h"
+#include "sample_rng.h"
+
+namespace raylab {
+namespace {
+
+// The sampler whose pattern gives the pairs past the position: the same kind, except that the
+// samplers placing every pixel's samples alike get their randomised counterparts.
+std::string_view twin_name(std::string_view name) {
+  if (name == "center") return "random";
+  if (name == "regular") return "jittered";
+  return name;
+}
+
+}  // namespace
+
+SampleDimensions::SampleDimensions(const PixelSampler& pixel_sampler)
+    : m_spp(pixel_sampler.spp()), m_seed(pixel_sampler.seed()) {
+  const std::string_view twin = twin_name(pixel_sampler.name());
+  m_twins.reserve(kStratifiedPairs - 1);
+  for (int k = 1; k < kStratifiedPairs; ++k) {
+    m_twins.push_back(
+        make_pixel_sampler(twin, m_spp, hash_seed(m_seed ^ kSampleDimensionSalt, static_cast<std::uint64_t>(k))));
+  }
+}
+
+SampleDimensions::~SampleDimensions() = default;
+SampleDimensions::SampleDimensions(SampleDimensions&&) noexcept = default;
+SampleDimensions& SampleDimensions::operator=(SampleDimensions&&) noexcept = default;
+
+Sample2 SampleDimensions::pair(int k, int px, int py, int index) const {
+  if (k < kStratifiedPairs) {
+    const std::uint64_t key = hash_seed(m_seed ^ kDimensionShuffleSalt, static_cast<std::uint64_t>(px),
+                                        static_cast<std::uint64_t>(py), static_cast<std::uint64_t>(k));
+    return m_twins[static_cast<std::size_t>(k - 1)]->sample(px, py, detail::permute(index, m_spp, key));
+  }
+  Pcg32 rng = detail::sample_rng(m_seed ^ kDeepDimensionSalt ^ static_cast<std::uint64_t>(k) * 0x9e3779b97f4a7c15ull,
+                                 px, py, index);
+  const float x = rng.next_float();
+  return {x, rng.next_float()};
+}
+
+}  // namespace raylab
