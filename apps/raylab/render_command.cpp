@@ -227,6 +227,11 @@ void add_tracing_options(CLI::App& cmd, RenderArgs& args) {
       ->check([](const std::string& v) { return v.starts_with('-') ? "the seed must not be negative" : ""; });
   cmd.add_option("--max-depth", args.settings.max_depth, "Ray tree depth; 1 = eye rays only (default 5)")
       ->check(CLI::Range(1, 64));
+  cmd.add_option("--env", args.settings.environment,
+                 "Path integrator: the light from everywhere, a colour R,G,B or a lat-long image (.exr, .pfm; "
+                 "docs/rendering.md gives the mapping); replaces the scene's environment");
+  cmd.add_option("--env-rotate", args.settings.environment_rotate,
+                 "Turn the environment about the up axis by this many degrees (counter-clockwise seen from above)");
   cmd.add_option("--integrator", args.settings.integrator,
                  "What computes the light: whitted (mirror, glass and shadow rays toward the lights; SPD's) or "
                  "path (Monte Carlo path tracing: global illumination); default: the scene's (docs/rendering.md)")

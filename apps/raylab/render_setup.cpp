@@ -152,6 +152,7 @@ std::unique_ptr<RenderSetup> prepare_render(const RenderArgs& given, bool writes
                        image_settings(s, setup.sampler, RenderOptions{}.tile_size, args.passes.value_or(1), args.accel),
                        {}};
   for (auto& camera_part : camera_settings(args.camera)) setup.header.settings.push_back(std::move(camera_part));
+  for (auto& env_part : environment_settings(args.settings)) setup.header.settings.push_back(std::move(env_part));
   if (saved) {
     check_resumable(*saved, setup.header, *args.resume);
     setup.progress = std::move(saved->progress);

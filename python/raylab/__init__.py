@@ -42,6 +42,7 @@ from ._raylab import (  # noqa: E402  (after the CPU check, on purpose)
     load,
     pinhole_rays,
     quality,
+    read_image,
     render,
     write_image,
 )
@@ -56,6 +57,7 @@ __all__ = [
     "load",
     "pinhole_rays",
     "quality",
+    "read_image",
     "render",
     "write_image",
     "__version__",

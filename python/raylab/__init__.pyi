@@ -115,10 +115,15 @@ def render(
     sampler: str | None = None,
     integrator: str | None = None,
     max_depth: int | None = None,
+    env: str | os.PathLike[str] | None = None,
+    env_rotate: float | None = None,
     accel: str = "bvh",
     threads: int | None = None,
 ) -> npt.NDArray[np.float32]:
     """Linear (H, W, 3) radiance image of the scene (integrator "whitted" or "path")."""
+
+def read_image(path: _Path) -> npt.NDArray[np.float32]:
+    """Reads a PNG (decoded to linear), EXR or PFM file as a linear (H, W, 3) array."""
 
 def write_image(path: _Path, image: _Floats) -> None:
     """Writes an (H, W, 3) linear image as PNG, EXR or PFM by the extension."""

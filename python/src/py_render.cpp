@@ -10,6 +10,7 @@
 #include "raylab/accel/two_level.h"
 #include "raylab/core/error.h"
 #include "raylab/io/image_io.h"
+#include "raylab/io/render_overrides.h"
 #include "raylab/io/scene_loader.h"
 #include "raylab/query/camera_rays.h"
 #include "raylab/render/film.h"
@@ -49,7 +50,8 @@ namespace {
 py::array_t<float> render_image(const py::object& scene_or_path, std::optional<int> width, std::optional<int> height,
                                 std::optional<int> spp, std::optional<std::string> sampler,
                                 std::optional<std::string> integrator, std::optional<int> max_depth,
-                                const std::string& accel, const py::object& threads) {
+                                const py::object& env, std::optional<float> env_rotate, const std::string& accel,
+                                const py::object& threads) {
   Scene scene = scene_of(scene_or_path);
   // One side given: the other follows the scene's shape; both: the view widens, never crops.
   set_image_size(scene, width, height);
@@ -63,6 +65,16 @@ py::array_t<float> render_image(const py::object& scene_or_path, std::optional<i
       throw py::value_error(std::string("integrator: ") + e.what());
     }
     s.integrator = *integrator;
+  }
+  if (!env.is_none() || env_rotate) {
+    SettingsOverride over;
+    if (!env.is_none()) over.environment = py::str(py::module_::import("os").attr("fspath")(env));
+    over.environment_rotate = env_rotate;
+    try {
+      apply_render_overrides(scene, over, CameraOverride{});
+    } catch (const UsageError& e) {
+      throw py::value_error(std::string("env: ") + e.what());
+    }
   }
   if (max_depth) {
     if (*max_depth < 1 || *max_depth > 64) throw py::value_error("max_depth: must be 1 to 64");
@@ -88,6 +100,23 @@ py::array_t<float> render_image(const py::object& scene_or_path, std::optional<i
   }
   if (result.interrupted) throw py::error_already_set();  // the KeyboardInterrupt the check saw
   py::array_t<float> image({s.height, s.width, 3});
+  float* out = image.mutable_data();
+  for (const Color& c : film.pixels()) {
+    *out++ = c.x;
+    *out++ = c.y;
+    *out++ = c.z;
+  }
+  return image;
+}
+
+py::array_t<float> read(const py::object& path) {
+  const std::string file = py::str(py::module_::import("os").attr("fspath")(path));
+  Film film(1, 1);
+  {
+    const py::gil_scoped_release released;
+    film = read_image(file);
+  }
+  py::array_t<float> image({film.height(), film.width(), 3});
   float* out = image.mutable_data();
   for (const Color& c : film.pixels()) {
     *out++ = c.x;
@@ -123,12 +152,16 @@ py::array_t<float> pinhole(int width, int height, const std::array<float, 3>& ey
 void bind_render(py::module_& m) {
   m.def("render", &render_image, py::arg("scene"), py::kw_only(), py::arg("width") = py::none(),
         py::arg("height") = py::none(), py::arg("spp") = py::none(), py::arg("sampler") = py::none(),
-        py::arg("integrator") = py::none(), py::arg("max_depth") = py::none(), py::arg("accel") = "bvh", py::arg("threads") = py::none(),
+        py::arg("integrator") = py::none(), py::arg("max_depth") = py::none(), py::arg("env") = py::none(),
+        py::arg("env_rotate") = py::none(), py::arg("accel") = "bvh", py::arg("threads") = py::none(),
         R"(Renders a scene (a Scene, a path or a built-in name) and returns the linear radiance as a
 float32 (H, W, 3) array. Settings not given are the scene's own; ``width``
 or ``height`` alone keeps the scene's shape, and both in another shape widen the view (never crop).
 ``sampler``, ``integrator`` ("whitted" or "path"), ``max_depth``: as the command line's --sampler,
---integrator and --max-depth. Ctrl-C interrupts (KeyboardInterrupt).)");
+--integrator and --max-depth; ``env`` ("R,G,B" or a lat-long image path) and ``env_rotate``
+(degrees) as --env and --env-rotate. Ctrl-C interrupts (KeyboardInterrupt).)");
+  m.def("read_image", &read, py::arg("path"),
+        R"(Reads a PNG (decoded to linear), EXR or PFM file as a linear float32 (H, W, 3) array.)");
   m.def("write_image", &write, py::arg("path"), py::arg("image"),
         R"(Writes a linear (H, W, 3) image: PNG (8-bit sRGB), EXR (float) or PFM by the extension. The file
 appears whole or not at all.)");

@@ -72,6 +72,8 @@ void fill_from_checkpoint(ResumableRequest& r, const RenderCheckpoint& saved, co
   from.fill(s.seed, name::kSeed, [](const std::string& v) { return std::stoull(v); });
   from.fill(s.sampler, name::kSampler);
   from.fill(s.integrator, name::kIntegrator);
+  from.fill(s.environment, name::kEnvironment);
+  from.fill(s.environment_rotate, name::kEnvironmentRotate, to_float);
   from.fill(s.filter, name::kFilter);
   from.fill(s.filter_radius, name::kFilterRadius, [](const std::string& v) { return std::stof(v); });
   from.fill(r.accel, name::kAccel);
@@ -82,6 +84,14 @@ void fill_from_checkpoint(ResumableRequest& r, const RenderCheckpoint& saved, co
   from.fill(c.up, name::kCameraUp, to_vec3);
   from.fill(c.fov_degrees, name::kFov, to_float);
   from.fill(c.orbit_degrees, name::kOrbit, to_float);
+}
+
+std::vector<std::pair<std::string, std::string>> environment_settings(const SettingsOverride& s) {
+  namespace name = setting_name;
+  std::vector<std::pair<std::string, std::string>> out;
+  if (s.environment) out.emplace_back(name::kEnvironment, *s.environment);
+  if (s.environment_rotate) out.emplace_back(name::kEnvironmentRotate, fmt::format("{}", *s.environment_rotate));
+  return out;
 }
 
 std::vector<std::pair<std::string, std::string>> camera_settings(const CameraOverride& c) {

@@ -9,13 +9,16 @@
 
 #include "json_document.h"
 #include "raylab/core/error.h"
+#include "raylab/io/environment_io.h"
 #include "raylab/io/read_file.h"
 #include "raylab/io/scene_loader.h"
 #include "raylab/io/texture_io.h"
 #include "raylab/render/integrator.h"
 #include "raylab/render/renderer.h"
 #include "raylab/sampling/filter.h"
+#include "raylab/scene/environment.h"
 #include "raylab/scene/mesh_builder.h"
+#include "raylab/scene/metals.h"
 #include "raylab/scene/scene_merge.h"
 #include "raylab/scene/spd.h"
 #include "scene_json_camera.h"
@@ -38,8 +41,8 @@ class SceneReader {
 
   Scene read() {
     const Node root(m_doc, m_doc.root(), "", "the scene");
-    root.check_keys(
-        {"$schema", "version", "description", "camera", "render", "materials", "lights", "meshes", "objects"});
+    root.check_keys({"$schema", "version", "description", "camera", "render", "materials", "lights", "environment",
+                     "meshes", "objects"});
     if (!root.has("version")) root.fail("the scene needs \"version\": " + std::to_string(kSceneFormatVersion));
     const std::int64_t version = root.integer("version", 0, 0, 1 << 30);
     if (version != kSceneFormatVersion) {
@@ -51,6 +54,7 @@ class SceneReader {
     if (root.has("render")) read_render(root.child("render", "'render'"));
     if (root.has("materials")) read_materials(root.child("materials", "'materials'"));
     if (root.has("lights")) read_lights(root.child("lights", "'lights'"));
+    if (root.has("environment")) read_environment(root.child("environment", "'environment'"));
     if (root.has("meshes")) read_meshes(root.child("meshes", "'meshes'"));
     if (!root.has("objects")) root.fail("the scene needs 'objects' (an array)");
     read_objects(root.child("objects", "'objects'"));
@@ -107,10 +111,12 @@ class SceneReader {
     if (!n.value().is_object()) n.fail("'materials' must be an object mapping names to materials");
     for (const auto& item : n.value().items()) {
       const Node m = n.child(item.key(), "material '" + item.key() + "'");
-      m.check_keys(
-          {"color", "kd", "ks", "shininess", "reflectivity", "transmittance", "ior", "emission", "fresnel", "texture"});
+      m.check_keys({"type", "color", "kd", "ks", "shininess", "reflectivity", "transmittance", "ior", "emission",
+                    "emission_strength", "fresnel", "texture", "roughness", "metal", "eta", "k", "metallic",
+                    "transmission"});
       Material mat;
       mat.name = item.key();
+      read_material_model(m, mat);
       mat.color = m.color("color", mat.color);
       mat.kd = m.real("kd", mat.kd, 0.0);
       mat.ks = m.real("ks", mat.ks, 0.0);
@@ -123,6 +129,61 @@ class SceneReader {
       if (m.has("texture")) read_texture(m.child("texture", "texture of material '" + item.key() + "'"), mat);
       m_materials[item.key()] = m_scene.add_material(mat);
     }
+  }
+
+  // The physically based part of a material: its "type" and that model's parameters (the
+  // Phong keys above stay what Whitted shades; docs/scene-format.md).
+  static void read_material_model(const Node& m, Material& mat) {
+    static constexpr std::array<std::pair<std::string_view, MaterialModel>, 6> kModels = {{
+        {"phong", MaterialModel::kPhong},
+        {"diffuse", MaterialModel::kDiffuse},
+        {"conductor", MaterialModel::kConductor},
+        {"dielectric", MaterialModel::kDielectric},
+        {"plastic", MaterialModel::kPlastic},
+        {"metallic_roughness", MaterialModel::kMetallicRoughness},
+    }};
+    std::vector<std::string_view> names;
+    for (const auto& [name, model] : kModels) names.push_back(name);
+    const std::string type = m.choice("type", names, "phong");
+    for (const auto& [name, model] : kModels) {
+      if (name == type) mat.model = model;
+    }
+    mat.roughness = static_cast<float>(m.real("roughness", mat.roughness, 0.0, 1.0));
+    mat.metallic = static_cast<float>(m.real("metallic", mat.metallic, 0.0, 1.0));
+    mat.transmission = static_cast<float>(m.real("transmission", mat.transmission, 0.0, 1.0));
+    mat.emission_strength = static_cast<float>(m.real("emission_strength", mat.emission_strength, 0.0));
+    if (m.has("metal")) {
+      if (m.has("eta") || m.has("k")) m.fail_at("metal", "give either 'metal' or 'eta' and 'k', not both");
+      const std::string metal = m.string("metal");
+      const std::optional<ConductorIor> ior = metal_ior(metal);
+      if (!ior) m.fail_at("metal", "unknown metal '" + metal + "' (known: gold, copper, aluminium, silver)");
+      mat.conductor_eta = ior->eta;
+      mat.conductor_k = ior->k;
+    }
+    mat.conductor_eta = m.color("eta", mat.conductor_eta);
+    mat.conductor_k = m.color("k", mat.conductor_k);
+  }
+
+  // The environment: {"color": [r, g, b]} or {"file": "sky.exr"}, with "rotate" (degrees about
+  // +y) and "scale".
+  void read_environment(const Node& n) {
+    n.check_keys({"color", "file", "rotate", "scale"});
+    if (n.has("color") == n.has("file")) n.fail("the environment needs exactly one of 'color' and 'file'");
+    const auto rotate = static_cast<float>(n.real("rotate", 0.0));
+    Environment env;
+    if (n.has("color")) {
+      env.color = n.color("color", env.color);
+      env.rotate_degrees = rotate;
+    } else {
+      const std::string reference = n.string("file");
+      const std::string path = resolve_scene_path(m_base_dir, reference, m_options.allow_outside_paths);
+      if (path.empty()) n.fail_at("file", outside_message(reference));
+      check_exists(n, reference, path, "environment");
+      env = load_environment(path, rotate, "environment image");
+      m_scene.source_files.push_back(path);
+    }
+    env.scale = static_cast<float>(n.real("scale", 1.0, 0.0));
+    m_scene.environment = std::make_shared<Environment>(std::move(env));
   }
 
   void read_texture(const Node& t, Material& mat) {

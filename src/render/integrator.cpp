@@ -2,13 +2,14 @@
 
 #include <array>
 
+#include "path_integrator.h"
 #include "raylab/core/error.h"
 #include "raylab/render/whitted.h"
 
 namespace raylab {
 namespace {
 
-constexpr std::array<std::string_view, 1> kNames = {"whitted"};
+constexpr std::array<std::string_view, 2> kNames = {"whitted", "path"};
 
 }  // namespace
 
@@ -23,8 +24,9 @@ void check_integrator_name(std::string_view name) {
   throw UsageError("unknown integrator '" + std::string(name) + "' (valid: " + list + ")");
 }
 
-std::unique_ptr<Integrator> make_integrator(std::string_view name, const Scene&) {
+std::unique_ptr<Integrator> make_integrator(std::string_view name, const Scene& scene) {
   check_integrator_name(name);
+  if (name == "path") return std::make_unique<detail::PathIntegrator>(scene);
   return std::make_unique<WhittedIntegrator>();
 }
 

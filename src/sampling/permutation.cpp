@@ -53,4 +53,27 @@ int permute(int i, int n, std::uint64_t key) {
   return static_cast<int>(v);
 }
 
+int shuffle(int i, int n, std::uint64_t key) {
+  if (n <= 1) return 0;
+  int bits = 0;
+  while ((1u << bits) < static_cast<std::uint32_t>(n)) ++bits;
+  const std::uint32_t mask = (1u << bits) - 1u;
+  // Each step is a bijection of the `bits`-bit integers (xor and add of a constant,
+  // multiplication by an odd number, xor with the value shifted right), so the whole is one;
+  // the shifts carry the high bits into the low ones, which multiplication alone never does.
+  const auto k0 = static_cast<std::uint32_t>(key);
+  const std::uint32_t k1 = static_cast<std::uint32_t>(key >> 32) | 1u;
+  const std::uint32_t k2 = (k1 * 0x9e3779b9u) | 1u;
+  const int shift = bits / 2 + 1;
+  auto v = static_cast<std::uint32_t>(i);
+  do {  // walk the cycle until it lands below n, as permute does
+    v = ((v ^ k0) * k1) & mask;
+    v ^= v >> shift;
+    v = (v * k2) & mask;
+    v ^= v >> shift;
+    v = (v + (k0 >> 16)) & mask;
+  } while (v >= static_cast<std::uint32_t>(n));
+  return static_cast<int>(v);
+}
+
 }  // namespace raylab::detail

@@ -34,11 +34,14 @@ SampleDimensions::~SampleDimensions() = default;
 SampleDimensions::SampleDimensions(SampleDimensions&&) noexcept = default;
 SampleDimensions& SampleDimensions::operator=(SampleDimensions&&) noexcept = default;
 
-Sample2 SampleDimensions::pair(int k, int px, int py, int index) const {
+std::uint64_t SampleDimensions::pixel_key(int px, int py) const {
+  return hash_seed(m_seed ^ kDimensionShuffleSalt, static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py));
+}
+
+Sample2 SampleDimensions::pair(int k, int px, int py, int index, std::uint64_t key) const {
   if (k < kStratifiedPairs) {
-    const std::uint64_t key = hash_seed(m_seed ^ kDimensionShuffleSalt, static_cast<std::uint64_t>(px),
-                                        static_cast<std::uint64_t>(py), static_cast<std::uint64_t>(k));
-    return m_twins[static_cast<std::size_t>(k - 1)]->sample(px, py, detail::permute(index, m_spp, key));
+    const std::uint64_t pair_key = mix64(key + static_cast<std::uint64_t>(k) * 0x9e3779b97f4a7c15ull);
+    return m_twins[static_cast<std::size_t>(k - 1)]->sample(px, py, detail::shuffle(index, m_spp, pair_key));
   }
   Pcg32 rng = detail::sample_rng(m_seed ^ kDeepDimensionSalt ^ static_cast<std::uint64_t>(k) * 0x9e3779b97f4a7c15ull,
                                  px, py, index);

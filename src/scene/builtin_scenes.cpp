@@ -11,9 +11,10 @@ namespace {
 
 // One line each for --list-scenes (at most 63 characters, to fit 80 columns beside the names):
 // what the scene shows; AA charts are the antialiasing scenes of `raylab quality`.
-constexpr std::array<BuiltinScene, 8> kScenes = {{
+constexpr std::array<BuiltinScene, 9> kScenes = {{
     {"demo", "Whitted revisited: mirror, glass and Phong spheres, a torus"},
     {"cornell", "the Cornell box: published sizes, colours and area light"},
+    {"showcase", "every material and metal under a sky with a sun (path)"},
     {"aa-checker", "AA chart: a checkerboard to the horizon (moire)"},
     {"aa-lines", "AA chart: thin lines 0.1 to 1.5 px wide and a Siemens star"},
     {"aa-zoneplate", "AA chart: a zone plate, rings up to 0.75 cycles per pixel"},
@@ -45,6 +46,7 @@ bool is_builtin_scene(std::string_view name) {
 Scene make_builtin_scene(std::string_view name) {
   if (name == "demo") return make_demo_scene();
   if (name == "cornell") return make_cornell_scene();
+  if (name == "showcase") return make_showcase_scene();
   if (name == "aa-checker") return make_aa_checker_scene();
   if (name == "aa-lines") return make_aa_lines_scene();
   if (name == "aa-zoneplate") return make_aa_zoneplate_scene();

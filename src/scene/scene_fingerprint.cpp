@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "raylab/core/hash64.h"
+#include "raylab/scene/environment.h"
 
 namespace raylab {
 namespace {
@@ -98,6 +99,19 @@ void hash_light(Hasher& h, const Light& l) {
   if (l.object >= 0) h.number(l.object);  // only when set: older fingerprints stay valid
 }
 
+void hash_environment(Hasher& h, const Environment& e) {
+  h.word(0x454E5649524F4E21ull);  // "ENVIRON!": a tag, so that it cannot read as more lights
+  h.vec(e.color);
+  h.number(e.rotate_degrees);
+  h.number(e.scale);
+  h.number(e.image != nullptr);
+  if (e.image) {
+    h.number(e.image->width);
+    h.number(e.image->height);
+    for (const Color& c : e.image->texels) h.vec(c);
+  }
+}
+
 void hash_camera(Hasher& h, const CameraSpec& c) {
   for (Vec3 v : {c.from, c.at, c.up}) h.vec(v);
   h.number(c.vfov_degrees);
@@ -160,6 +174,7 @@ std::uint64_t scene_fingerprint(const Scene& scene) {
   for (const Material& m : scene.materials) hash_material(h, m);
   h.number(static_cast<std::uint64_t>(scene.lights.size()));
   for (const Light& l : scene.lights) hash_light(h, l);
+  if (scene.environment) hash_environment(h, *scene.environment);  // none: as before there was one
   hash_camera(h, scene.camera);
   h.number(scene.camera_from_file);
   hash_settings(h, scene.settings);

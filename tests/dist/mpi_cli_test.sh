@@ -30,6 +30,13 @@ identical)
     mpi "$n" "$raylab" render "${small[@]}" --filter gaussian --passes 2 -o "mpi-g$n.png" || fail "gaussian, $n ranks"
     cmp -s local-g.png "mpi-g$n.png" || fail "$n ranks, gaussian in 2 passes: image differs"
   done
+  # The path integrator draws every random number from (pixel, sample, dimension) too.
+  path=(cornell --integrator path --width 40 --height 30 --spp 8 -q)
+  "$raylab" render "${path[@]}" -o local-path.pfm || fail "local path render"
+  for n in 1 3; do
+    mpi "$n" "$raylab" render "${path[@]}" -o "mpi-path$n.pfm" || fail "path, $n ranks"
+    cmp -s local-path.pfm "mpi-path$n.pfm" || fail "$n ranks, path integrator: image differs"
+  done
   ;;
 killed)
   long=(demo --width 320 --height 200 --spp 64 -q)

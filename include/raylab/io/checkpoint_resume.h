@@ -27,6 +27,10 @@ struct ResumableRequest {
   CameraOverride camera;
 };
 
+/// The environment parts of `s` given (--env, --env-rotate), as a checkpoint records them after
+/// image_settings(): only those given, so that other checkpoints read as before.
+std::vector<std::pair<std::string, std::string>> environment_settings(const SettingsOverride& s);
+
 /// The parts of `camera` given, as a checkpoint records them after image_settings(): only those
 /// given, so that a checkpoint without camera parts reads as it did before they existed.
 std::vector<std::pair<std::string, std::string>> camera_settings(const CameraOverride& camera);

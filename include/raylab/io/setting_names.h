@@ -20,6 +20,9 @@ inline constexpr char kAccel[] = "accel";                 ///< the acceleration 
 /// The integrator, recorded only when it is not "whitted" (so checkpoints written before there
 /// was a choice read as Whitted renders, which they were).
 inline constexpr char kIntegrator[] = "integrator";
+// The environment given over the scene's (--env, --env-rotate), recorded only when given.
+inline constexpr char kEnvironment[] = "env";               ///< --env: "R,G,B" or an image file
+inline constexpr char kEnvironmentRotate[] = "env rotate";  ///< --env-rotate: degrees
 // The camera parts given over the scene's (CameraOverride), recorded only when given.
 inline constexpr char kUpAxis[] = "up axis";          ///< --up: "z", "-y", ...
 inline constexpr char kCameraFrom[] = "camera from";  ///< --camera-from: "X,Y,Z"

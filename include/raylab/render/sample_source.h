@@ -22,15 +22,17 @@ class SampleSource {
   /// Pairs 1, 2, ... of sample `index` of pixel (px, py) from `dims` (which must outlive this);
   /// rng() still starts from Pcg32(path_seed).
   SampleSource(std::uint64_t path_seed, const SampleDimensions& dims, int px, int py, int index)
-      : m_rng(path_seed), m_dims(&dims), m_px(px), m_py(py), m_index(index) {}
+      : m_rng(path_seed), m_dims(&dims), m_px(px), m_py(py), m_index(index), m_pixel_key(dims.pixel_key(px, py)) {}
 
-  /// The path's generator: Whitted's area-light samples draw from it, as they always have.
+  /// The path's generator of independent numbers: Whitted's area-light samples draw from it, as
+  /// they always have, and the path integrator's one-dimensional decisions that gain nothing from
+  /// stratification (Russian roulette, a mixed material's model).
   Pcg32& rng() { return m_rng; }
 
   /// The next dimension pair: pair 1 on the first call, then 2, 3, ... (pair 0 is the position
   /// in the pixel, which the pixel loop has used).
   Sample2 next_2d() {
-    if (m_dims != nullptr) return m_dims->pair(m_next_pair++, m_px, m_py, m_index);
+    if (m_dims != nullptr) return m_dims->pair(m_next_pair++, m_px, m_py, m_index, m_pixel_key);
     const float x = m_rng.next_float();
     return {x, m_rng.next_float()};
   }
@@ -43,6 +45,7 @@ class SampleSource {
   Pcg32 m_rng;
   const SampleDimensions* m_dims = nullptr;
   int m_px = 0, m_py = 0, m_index = 0;
+  std::uint64_t m_pixel_key = 0;
   int m_next_pair = 1;
 };
 

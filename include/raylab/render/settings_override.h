@@ -26,6 +26,10 @@ struct SettingsOverride {
   // Later members last, with initialisers, so that positional initialisers of the members above
   // stay valid (and warning-free).
   std::optional<std::string> integrator{};  ///< integrator name (as --integrator)
+  /// The environment, as --env names it ("R,G,B" or an image file). Not a RenderSettings member:
+  /// apply_render_overrides (io) loads it into Scene::environment.
+  std::optional<std::string> environment{};
+  std::optional<float> environment_rotate{};  ///< --env-rotate: degrees about +y (applied with `environment`)
 };
 
 /// Sets every member `over` gives on `settings`, leaving the others as they are; a sampler that

@@ -7,11 +7,11 @@
 ///
 /// Layout: pair 0 is the pixel position, from the render's pixel sampler itself. Pair k >= 1
 /// comes from a twin of that sampler (same kind, same spp, its own seed), with the sample
-/// indices shuffled per pair and pixel: within one pair the spp samples of a pixel keep the
-/// sampler's stratification (jittered strata, cmj's n-rooks, Sobol's (0,2)-net), and between
-/// pairs they are independent, as with pbrt's padded samplers. Samplers that place every pixel's
-/// samples alike (center, regular) have random twins (random, jittered): a path needs random
-/// numbers. Pairs from kStratifiedPairs on are independent uniform numbers.
+/// indices shuffled per pair and pixel (detail::shuffle, a cheap keyed bijection): within one pair the spp samples of a
+/// pixel keep the sampler's stratification (jittered strata, cmj's n-rooks, Sobol's (0,2)-net), and between pairs they
+/// are independent, as with pbrt's padded samplers. Samplers that place every pixel's samples alike (center, regular)
+/// have random twins (random, jittered): a path needs random numbers. Pairs from kStratifiedPairs on are independent
+/// uniform numbers.
 
 #include <cstdint>
 #include <memory>
@@ -34,7 +34,13 @@ class SampleDimensions {
   SampleDimensions& operator=(SampleDimensions&&) noexcept;
 
   /// Pair `k` (>= 1) of sample `index` of pixel (px, py), in [0, 1)^2.
-  Sample2 pair(int k, int px, int py, int index) const;
+  Sample2 pair(int k, int px, int py, int index) const { return pair(k, px, py, index, pixel_key(px, py)); }
+
+  /// What every pair of pixel (px, py) shares: hashed once per sample by SampleSource rather
+  /// than once per pair.
+  std::uint64_t pixel_key(int px, int py) const;
+  /// pair(k, px, py, index), with `key` = pixel_key(px, py).
+  Sample2 pair(int k, int px, int py, int index, std::uint64_t key) const;
 
  private:
   std::vector<std::unique_ptr<PixelSampler>> m_twins;  // m_twins[k - 1] gives pair k

@@ -35,4 +35,8 @@ Scene make_demo_scene();
 /// a quad area light with an emissive quad in its place.
 Scene make_cornell_scene();
 
+/// The material showcase: a row of spheres of every physically based model and named metal on
+/// a checkered ground, under a lat-long sky with a sun; renders with the path integrator.
+Scene make_showcase_scene();
+
 }  // namespace raylab

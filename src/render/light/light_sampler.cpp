@@ -1,0 +1,266 @@
+#include "light_sampler.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "raylab/geometry/planar.h"
+#include "raylab/geometry/sphere.h"
+#include "raylab/render/whitted.h"
+#include "raylab/scene/environment.h"
+#include "shape_sampling.h"
+
+namespace raylab::detail {
+namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+
+// Lat-long resolution of the stand-in for a sky gradient background (no environment given):
+// fine enough that the gradient's steps do not show in the lighting.
+constexpr int kSkyWidth = 256, kSkyHeight = 128;
+
+// The settings' background as an environment: its colour, or its sky gradient drawn into a
+// lat-long image so that it is importance-sampled like any other.
+Environment background_environment(const RenderSettings& s) {
+  Environment env;
+  if (!s.sky_gradient) {
+    env.color = s.background;
+    return env;
+  }
+  auto image = std::make_shared<EnvironmentImage>();
+  image->width = kSkyWidth;
+  image->height = kSkyHeight;
+  image->texels.resize(static_cast<std::size_t>(kSkyWidth) * kSkyHeight);
+  for (int y = 0; y < kSkyHeight; ++y) {
+    const float theta = kPi * (static_cast<float>(y) + 0.5f) / kSkyHeight;
+    const Color c = WhittedIntegrator::background(s, Vec3{0.f, std::cos(theta), std::sin(theta)});
+    for (int x = 0; x < kSkyWidth; ++x) image->texels[static_cast<std::size_t>(y) * kSkyWidth + x] = c;
+  }
+  env.image = std::move(image);
+  return env;
+}
+
+bool emits(Color c) { return c.x > 0.f || c.y > 0.f || c.z > 0.f; }
+
+}  // namespace
+
+LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
+  std::vector<float> power;
+  const Box3 bounds = scene.bounds();
+  const float radius = !bounds.empty() ? 0.5f * length(bounds.hi - bounds.lo) : 1.f;
+
+  // Emissive primitives of the scene's own geometry (instanced prototypes glow where a ray hits
+  // them, but are not sampled: docs/rendering.md).
+  const Geometry& g = scene.geometry;
+  const std::uint32_t prims = g.size();
+  for (std::uint32_t id = 0; id < prims; ++id) {
+    const Material& m = scene.materials[scene.objects[g.object_of(id)].material];
+    const Color radiance = m.emission * m.emission_strength;
+    if (!emits(radiance)) continue;
+    if (m_light_of_prim.empty()) {
+      m_light_of_prim.assign(prims, -1);
+      m_emission_of_prim.assign(prims, Color{0.f});
+    }
+    const ShapeRef ref = g.resolve(id);
+    float area = 0.f;
+    switch (ref.kind) {
+      case ShapeKind::kTriangle:
+        area = triangle_area(g.triangles[ref.index]);
+        break;
+      case ShapeKind::kSphere:
+        area = sphere_area(g.spheres[ref.index]);
+        break;
+      case ShapeKind::kDisk:
+        area = disk_area(g.disks[ref.index]);
+        break;
+      case ShapeKind::kQuad:
+        area = quad_area(g.quads[ref.index]);
+        break;
+      case ShapeKind::kCylinder:
+        break;  // glows when hit; not sampled
+    }
+    m_emission_of_prim[id] = radiance;
+    if (!(area > 0.f)) continue;
+    m_light_of_prim[id] = static_cast<std::int32_t>(m_lights.size());
+    m_lights.push_back({Kind::kShape, id, area, radiance});
+    power.push_back(luminance(radiance) * area * kPi);  // one side
+  }
+
+  for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+    const Light& light = scene.lights[l];
+    const auto index = static_cast<std::uint32_t>(l);
+    const Color pi_i = light.intensity * kPi;
+    switch (light.kind) {
+      case Light::Kind::kPoint:
+        m_lights.push_back({Kind::kPoint, index, 0.f, pi_i});
+        power.push_back(4.f * kPi * luminance(pi_i));
+        break;
+      case Light::Kind::kDirectional:
+        m_lights.push_back({Kind::kDirectional, index, 0.f, pi_i});
+        power.push_back(kPi * radius * radius * luminance(pi_i));
+        break;
+      case Light::Kind::kQuad:
+      case Light::Kind::kSphere: {
+        if (light.object >= 0) break;  // its object is the emitter
+        const bool quad = light.kind == Light::Kind::kQuad;
+        const float area = quad ? quad_area(Quad{light.position, light.edge_u, light.edge_v})
+                                : sphere_area(Sphere{light.position, light.radius});
+        if (!(area > 0.f)) break;
+        const Color radiance = pi_i / area;
+        m_lights.push_back({quad ? Kind::kLightQuad : Kind::kLightSphere, index, area, radiance});
+        power.push_back(luminance(radiance) * area * (quad ? 2.f : 1.f) * kPi);
+        break;
+      }
+    }
+  }
+
+  m_environment.emplace(scene.environment ? *scene.environment : background_environment(scene.settings));
+  const float env_power = luminance(m_environment->power_estimate(radius));
+  if (env_power > 0.f) {
+    m_environment_entry = static_cast<std::int32_t>(m_lights.size());
+    m_lights.push_back({Kind::kEnvironment, 0, 0.f, Color{0.f}});
+    power.push_back(env_power);
+  }
+  if (!m_lights.empty()) m_choice.emplace(power);
+}
+
+float LightSampler::choice_probability(std::size_t i) const {
+  // The density of a bin's points over [0, 1) is n times the bin's probability.
+  const auto n = static_cast<float>(m_choice->size());
+  return m_choice->pdf((static_cast<float>(i) + 0.5f) / n) / n;
+}
+
+float LightSampler::area_pdf(Vec3 from, Vec3 at, Vec3 normal, float area, float choice) {
+  const Vec3 d = at - from;
+  const float dist2 = dot(d, d);
+  const float cos_light = std::fabs(dot(normal, d)) / std::sqrt(dist2);
+  if (!(cos_light > 0.f)) return 0.f;
+  return choice * dist2 / (cos_light * area);
+}
+
+std::optional<LightSample> LightSampler::sample(Vec3 p, float u_choice, Sample2 u) const {
+  if (m_lights.empty()) return std::nullopt;
+  const Distribution1D::Sample picked = m_choice->sample_continuous(u_choice);
+  const float choice = picked.pdf / static_cast<float>(m_choice->size());
+  const Entry& e = m_lights[static_cast<std::size_t>(picked.index)];
+  LightSample ls;
+  switch (e.kind) {
+    case Kind::kPoint: {
+      const Light& light = m_scene.lights[e.index];
+      const Vec3 to = light.position - p;
+      ls.distance = length(to);
+      if (!(ls.distance > 0.f)) return std::nullopt;
+      ls.wi = to / ls.distance;
+      ls.li = light.falloff ? e.radiance / (ls.distance * ls.distance) : e.radiance;
+      ls.pdf = choice;
+      ls.delta = true;
+      return ls;
+    }
+    case Kind::kDirectional: {
+      const Light& light = m_scene.lights[e.index];
+      ls.wi = normalize(-light.direction);
+      ls.distance = std::numeric_limits<float>::infinity();
+      ls.li = e.radiance;
+      ls.pdf = choice;
+      ls.delta = true;
+      return ls;
+    }
+    case Kind::kEnvironment: {
+      const std::optional<EnvironmentLight::Sample> s = m_environment->sample(u);
+      if (!s || !(s->pdf > 0.f)) return std::nullopt;
+      ls.wi = s->wi;
+      ls.distance = std::numeric_limits<float>::infinity();
+      ls.li = s->radiance;
+      ls.pdf = s->pdf * choice;
+      return ls;
+    }
+    case Kind::kShape:
+    case Kind::kLightQuad:
+    case Kind::kLightSphere:
+      break;
+  }
+  SurfacePoint at;
+  if (e.kind == Kind::kShape) {
+    const Geometry& g = m_scene.geometry;
+    const ShapeRef ref = g.resolve(e.index);
+    switch (ref.kind) {
+      case ShapeKind::kTriangle:
+        at = sample_triangle(g.triangles[ref.index], u);
+        break;
+      case ShapeKind::kSphere:
+        at = sample_sphere(g.spheres[ref.index], u);
+        break;
+      case ShapeKind::kDisk:
+        at = sample_disk(g.disks[ref.index], u);
+        break;
+      case ShapeKind::kQuad:
+        at = sample_quad(g.quads[ref.index], u);
+        break;
+      case ShapeKind::kCylinder:
+        return std::nullopt;
+    }
+  } else {
+    const Light& light = m_scene.lights[e.index];
+    at = e.kind == Kind::kLightQuad ? sample_quad(Quad{light.position, light.edge_u, light.edge_v}, u)
+                                    : sample_sphere(Sphere{light.position, light.radius}, u);
+  }
+  const Vec3 to = at.position - p;
+  // An emitter of the scene lights the side its normal points to (a sphere or quad light that
+  // is not geometry, both sides).
+  if (e.kind == Kind::kShape && !(dot(at.normal, to) < 0.f)) return std::nullopt;
+  ls.distance = length(to);
+  if (!(ls.distance > 0.f)) return std::nullopt;
+  ls.wi = to / ls.distance;
+  ls.pdf = area_pdf(p, at.position, at.normal, e.area, choice);
+  if (!(ls.pdf > 0.f) || !std::isfinite(ls.pdf)) return std::nullopt;
+  ls.li = e.radiance;
+  return ls;
+}
+
+float LightSampler::emitter_pdf(Vec3 from, std::uint32_t prim, Vec3 at, Vec3 normal) const {
+  if (prim >= m_light_of_prim.size() || m_light_of_prim[prim] < 0) return 0.f;
+  const auto entry = static_cast<std::size_t>(m_light_of_prim[prim]);
+  return area_pdf(from, at, normal, m_lights[entry].area, choice_probability(entry));
+}
+
+Color LightSampler::emitted(std::uint32_t prim) const {
+  return prim < m_emission_of_prim.size() ? m_emission_of_prim[prim] : Color{0.f};
+}
+
+std::optional<LightShapeHit> LightSampler::hit_light_shape(const Ray& ray, float tmax) const {
+  std::optional<LightShapeHit> best;
+  for (std::size_t i = 0; i < m_lights.size(); ++i) {
+    const Entry& e = m_lights[i];
+    if (e.kind != Kind::kLightQuad && e.kind != Kind::kLightSphere) continue;
+    const Light& light = m_scene.lights[e.index];
+    float t = 0.f;
+    Vec3 normal;
+    if (e.kind == Kind::kLightQuad) {
+      const Quad q{light.position, light.edge_u, light.edge_v};
+      float s = 0.f, v = 0.f;
+      if (!intersect_quad(q, ray, ray.tmin, tmax, t, s, v)) continue;
+      normal = normalize(cross(q.edge_u, q.edge_v));
+    } else {
+      const Sphere sphere{light.position, light.radius};
+      if (!intersect_sphere(sphere, ray, ray.tmin, tmax, t)) continue;
+      normal = normalize(ray.origin + ray.direction * t - sphere.center);
+    }
+    tmax = t;
+    best = LightShapeHit{t, e.radiance, static_cast<std::uint32_t>(i), normal};
+  }
+  return best;
+}
+
+float LightSampler::light_shape_pdf(Vec3 from, std::uint32_t light, Vec3 at, Vec3 normal) const {
+  return area_pdf(from, at, normal, m_lights[light].area, choice_probability(light));
+}
+
+Color LightSampler::environment(Vec3 dir) const { return m_environment->radiance(dir); }
+
+float LightSampler::environment_pdf(Vec3 dir) const {
+  if (m_environment_entry < 0) return 0.f;
+  return m_environment->pdf(dir) * choice_probability(static_cast<std::size_t>(m_environment_entry));
+}
+
+}  // namespace raylab::detail
