@@ -175,6 +175,16 @@ class Gltf : public ::testing::Test {
     m_path = write(m_dir / "scene.gltf", doc.gltf_text());
     expect_error_in(m_path, fragment, options);
   }
+  // Loads `path`, which must fail with a message that starts with `prefix` (the file and where
+  // in it).
+  void expect_error_at(const std::string& path, const std::string& prefix) {
+    try {
+      load_gltf(path, m_scene);
+      ADD_FAILURE() << "no error for " << path;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(prefix, 0), 0u) << e.what() << "\nexpected prefix: " << prefix;
+    }
+  }
 
   // The scene's material for triangle `t`.
   const Material& material_of_triangle(std::size_t t) const {
@@ -359,6 +369,44 @@ TEST_F(Gltf, MaterialsAndADataUriTexture) {
   EXPECT_EQ(none.color, Material{}.color);
 }
 
+TEST_F(Gltf, MetallicRoughnessAndItsExtensionsKeepTheirValues) {
+  // The path integrator reads the file's own model; Whitted keeps the Phong mapping above.
+  GltfDoc doc;
+  doc.j["extensionsUsed"] = {"KHR_materials_ior", "KHR_materials_transmission", "KHR_materials_emissive_strength"};
+  doc.j["materials"].push_back(
+      {{"pbrMetallicRoughness",
+        {{"baseColorFactor", {0.9, 0.8, 0.7, 1.0}}, {"metallicFactor", 0.25}, {"roughnessFactor", 0.4}}},
+       {"emissiveFactor", {1, 0.5, 0}},
+       {"extensions",
+        {{"KHR_materials_ior", {{"ior", 1.33}}},
+         {"KHR_materials_transmission", {{"transmissionFactor", 0.8}}},
+         {"KHR_materials_emissive_strength", {{"emissiveStrength", 6.0}}}}}});
+  doc.j["materials"].push_back({{"pbrMetallicRoughness", {{"roughnessFactor", 0.1}}}});
+  doc.add_node({{"mesh", doc.add_triangle_mesh({{"material", 0}})}});
+  doc.add_node({{"mesh", doc.add_triangle_mesh({{"material", 1}})}});
+  load(doc);
+  const Material& water = material_of_triangle(0);
+  EXPECT_EQ(water.model, MaterialModel::kMetallicRoughness);
+  EXPECT_FLOAT_EQ(water.metallic, 0.25f);
+  EXPECT_FLOAT_EQ(water.roughness, 0.4f);
+  EXPECT_FLOAT_EQ(water.ior, 1.33f);
+  EXPECT_FLOAT_EQ(water.transmission, 0.8f);
+  EXPECT_FLOAT_EQ(water.emission_strength, 6.f);
+  EXPECT_EQ(water.emission, Color(1, 0.5f, 0));
+  // Without the extensions: the specification's defaults (ior 1.5, no transmission, strength 1).
+  const Material& plain = material_of_triangle(1);
+  EXPECT_EQ(plain.model, MaterialModel::kMetallicRoughness);
+  EXPECT_FLOAT_EQ(plain.metallic, 1.f);
+  EXPECT_FLOAT_EQ(plain.ior, 1.5f);
+  EXPECT_FLOAT_EQ(plain.transmission, 0.f);
+  EXPECT_FLOAT_EQ(plain.emission_strength, 1.f);
+  // A value that is not a number is refused, naming where.
+  GltfDoc bad;
+  bad.j["materials"].push_back({{"extensions", {{"KHR_materials_ior", {{"ior", "thick"}}}}}});
+  bad.add_node({{"mesh", bad.add_triangle_mesh({{"material", 0}})}});
+  expect_error(bad, "extensions.KHR_materials_ior.ior must be a finite number");
+}
+
 TEST_F(Gltf, ImageFileNextToTheGltf) {
   write(m_dir / "tex.png", red_blue_png());
   GltfDoc doc;
@@ -496,6 +544,117 @@ TEST_F(Gltf, RequiredExtensionIsRefused) {
   doc.add_triangle_mesh();
   doc.j["extensionsRequired"] = {"KHR_draco_mesh_compression"};
   expect_error(doc, "needs extension KHR_draco_mesh_compression");
+}
+
+// glTF 1.0 as collada2gltf wrote it: dictionaries keyed by name where glTF 2.0 has arrays.
+// tinygltf skips them without a word, which left "the mesh has no faces".
+const char* const kGltf1Body =
+    "  \"scene\": \"defaultScene\",\n"
+    "  \"scenes\": {\"defaultScene\": {\"nodes\": [\"node_1\"]}},\n"
+    "  \"nodes\": {\"node_1\": {\"meshes\": [\"mesh_1\"]}},\n"
+    "  \"meshes\": {\"mesh_1\": {\"primitives\": [{\"attributes\": {\"POSITION\": \"accessor_1\"}, \"mode\": 4}]}},\n"
+    "  \"techniques\": {\"technique_1\": {\"program\": \"program_1\"}}\n"
+    "}\n";
+
+TEST_F(Gltf, Gltf1IsRefusedByItsVersion) {
+  const std::string head = "{\n  \"asset\": {\n    \"generator\": \"collada2gltf@f356b99\",\n    \"version\": ";
+  const std::string path = write(m_dir / "duck.gltf", head + "\"1.0\"\n  },\n" + kGltf1Body);
+  expect_error_at(path, path +
+                            ":4:5: asset.version is '1.0': this is glTF 1.0, which raylab does not read (convert "
+                            "it to glTF 2.0 first, e.g. with gltf-pipeline)");
+  // Early exporters wrote the version as a number.
+  const std::string number = write(m_dir / "number.gltf", head + "1\n  },\n" + kGltf1Body);
+  expect_error_at(number, number + ":4:5: asset.version is '1': this is glTF 1.0");
+}
+
+TEST_F(Gltf, Gltf1WithoutAVersionIsKnownByItsDictionaries) {
+  // glTF 1.0 files may have no asset at all; tinygltf then said only that "asset" was missing.
+  const std::string path = write(m_dir / "old.gltf", std::string("{\n") + kGltf1Body);
+  expect_error_at(path,
+                  path + ":5:3: \"meshes\" is an object keyed by name: this is glTF 1.0, which raylab does not read");
+  // Only glTF 1.0 has shader techniques.
+  const std::string shaders =
+      write(m_dir / "shaders.gltf", "{\"asset\": {}, \"techniques\": {}, \"meshes\": [], \"nodes\": []}");
+  expect_error_at(shaders, shaders + ":1:15: \"techniques\" is a glTF 1.0 property: this is glTF 1.0");
+}
+
+TEST_F(Gltf, BinaryGltf1IsRefused) {
+  // A KHR_binary_glTF file: version 1, then the length, the content length and its format (0: JSON).
+  Bytes glb = {'g', 'l', 'T', 'F'};
+  put32(glb, 1);
+  put32(glb, 24);
+  put32(glb, 4);
+  put32(glb, 0);
+  glb.insert(glb.end(), {'{', '}', ' ', ' '});
+  const std::string path = write(m_dir / "old.glb", glb);
+  expect_error_at(path, path + ": byte 4: glTF binary version 1: this is glTF 1.0, which raylab does not read");
+}
+
+TEST_F(Gltf, VersionsOtherThan2AreRefusedByName) {
+  GltfDoc doc;
+  doc.add_node({{"mesh", doc.add_triangle_mesh()}});
+  doc.j["asset"]["version"] = "3.0";
+  expect_error(doc, "asset.version is '3.0': raylab reads glTF 2.0 only");
+  doc.j["asset"]["version"] = "two";
+  expect_error(doc, "asset.version is 'two', which is not a glTF version (glTF 2.0 files say \"2.0\")");
+  doc.j["asset"]["version"] = 2;
+  expect_error(doc, "asset.version is '2', a number: glTF writes the version as a string (\"2.0\")");
+  // Any 2.x is glTF 2.0: minor versions only add what a 2.0 reader may ignore.
+  doc.j["asset"]["version"] = "2.1";
+  load(doc);
+  EXPECT_EQ(m_scene.geometry.triangles.size(), 1u);
+}
+
+TEST_F(Gltf, ObjectsWhereGltf2HasArraysAreRefused) {
+  GltfDoc doc;
+  const int mesh = doc.add_triangle_mesh();
+  doc.j["nodes"] = {{"root", {{"mesh", mesh}}}};
+  expect_error(doc, "nodes: an object keyed by name, where glTF 2.0 has an array");
+}
+
+TEST_F(Gltf, DracoCompressionIsNamed) {
+  // What a Draco exporter writes: the compressed bytes in a buffer view of their own, accessors
+  // that describe the decoded data and have no bufferView, and Draco in extensionsRequired.
+  // tinygltf refused such files as "accessor[1] invalid bufferView".
+  GltfDoc doc;
+  const int mesh = doc.add_triangle_mesh();
+  doc.add_node({{"mesh", mesh}});
+  const json uncompressed = doc.j["accessors"];
+  for (json& a : doc.j["accessors"]) a.erase("bufferView");
+  const int compressed = doc.add_view(Bytes(16, 0xAB));
+  doc.j["meshes"][mesh]["primitives"][0]["extensions"] = {
+      {"KHR_draco_mesh_compression", {{"bufferView", compressed}, {"attributes", {{"POSITION", 0}}}}}};
+  doc.j["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+  doc.j["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  expect_error(doc,
+               "extensionsRequired: the file needs extension KHR_draco_mesh_compression (Draco mesh compression), "
+               "which raylab does not support (export the model again without it)");
+  expect_error_at(m_path, m_path + ":1:");  // at its line and column in a .gltf
+  const std::string glb = write(m_dir / "draco.glb", doc.glb());
+  expect_error_at(glb, glb + ": extensionsRequired: the file needs extension KHR_draco_mesh_compression");
+  // Draco used but not listed as required, and no uncompressed copy: the primitive is named.
+  doc.j.erase("extensionsRequired");
+  expect_error(doc,
+               "meshes[0].primitives[0]: compressed with KHR_draco_mesh_compression, which raylab does not decode, "
+               "and the file holds no uncompressed copy");
+  // With the uncompressed copy that a file not requiring Draco must hold, that copy is read.
+  doc.j["accessors"] = uncompressed;
+  load(doc);
+  EXPECT_EQ(m_scene.geometry.triangles.size(), 1u);
+}
+
+TEST_F(Gltf, EveryRequiredExtensionIsNamedAndUsedOnesAreIgnored) {
+  GltfDoc doc;
+  doc.add_node({{"mesh", doc.add_triangle_mesh()}});
+  doc.j["extensionsUsed"] = {"KHR_materials_variants", "EXT_meshopt_compression"};
+  doc.j["extensionsRequired"] = {"EXT_meshopt_compression", "KHR_materials_variants"};
+  expect_error(doc,
+               "needs extensions EXT_meshopt_compression (meshopt compression), KHR_materials_variants, which "
+               "raylab does not support (export the model again without them)");
+  // An extension that is used but not required may be ignored: the file is read without it.
+  doc.j.erase("extensionsRequired");
+  load(doc);
+  EXPECT_EQ(m_scene.geometry.triangles.size(), 1u);
 }
 
 TEST_F(Gltf, GarbageGlbAndJson) {

@@ -660,7 +660,13 @@ TEST(PlyLoader, HeaderErrors) {
        "mesh.ply:4:15: ", "a list length must have an integer type"},
       {fmt + "element vertex 1\nproperty float\n", "mesh.ply:4:15: ", "expected a property name"},
       {fmt + "element vertex 1\nproperty float x y\n", "mesh.ply:4:18: ", "unexpected 'y'"},
-      {fmt + "vertex 1\n", "mesh.ply:3:1: ", "unknown PLY header line 'vertex'"},
+      // A line that starts with no keyword is skipped; the missing end_header then names it.
+      {fmt + "vertex 1\n", "mesh.ply:4:1: ",
+       "unexpected end of file, expected 'end_header' (1 header line starting with no PLY keyword skipped, "
+       "the first 'vertex 1' at line 3)"},
+      {fmt + "element vertex -1\n", "mesh.ply:3:16: ", "expected an element count"},
+      {fmt + "element vertex\n", "mesh.ply:3:15: ", "expected an element count"},
+      {fmt + "element vertex 3 extra\n", "mesh.ply:3:18: ", "unexpected 'extra'"},
       {fmt + "element vertex 1\n" + xyz, "mesh.ply:7:1: ", "unexpected end of file, expected 'end_header'"},
       {fmt + "element vertex 0\nproperty float x\nproperty float y\nend_header\n",
        "mesh.ply:3:16: ", "needs properties x, y and z"},
@@ -682,6 +688,81 @@ TEST(PlyLoader, HeaderErrors) {
     SCOPED_TRACE(c.text);
     expect_error(c.text, c.prefix, c.words);
   }
+}
+
+TEST(PlyLoader, HeaderLinesWithNoKeywordAreSkippedWithAWarning) {
+  // Exporters write lines such as these; obj_info is a known convention, skipped silently.
+  const std::string text =
+      "ply\n"
+      "format ascii 1.0\n"
+      "Created by Blender 2.79 - www.blender.org\n"
+      "obj_info scanned 2003\n"
+      "element vertex 4\n"
+      "property float x\n"
+      "property float y\n"
+      "property float z\n"
+      "element face 2\n"
+      "property list uchar int vertex_indices\n"
+      "  exported\tby hand\n"
+      "end_header\n"
+      "0 0 0\n1 0 0\n1 1 0.5\n0 1 0.5\n"
+      "3 0 1 2\n4 0 1 2 3\n";
+  const test::TempDir dir("ply");
+  const std::string path = test::write_text(dir.path() / "blender.ply", text);
+  Scene scene;
+  test::expect_triangle_and_quad(load_ply(path, scene, 2), scene.geometry, 2);
+  ASSERT_EQ(scene.warnings.size(), 2u);
+  EXPECT_EQ(
+      scene.warnings[0],
+      path + ":3:1: header line 'Created by Blender 2.79 - www.blender.or...' starts with no PLY keyword; skipped");
+  EXPECT_EQ(scene.warnings[1], path + ":11:3: header line 'exported?by hand' starts with no PLY keyword; skipped")
+      << "the line is shown from its first word to its last, control bytes as '?'";
+  // parse_ply reads the same triangles; it has no scene to warn in.
+  Geometry g;
+  test::expect_triangle_and_quad(parse_ply(text, "blender.ply", g, 2), g, 2);
+}
+
+TEST(PlyLoader, ManySkippedHeaderLinesAreCountedNotListed) {
+  std::string lines;
+  for (int i = 0; i < 8; ++i) lines += "note " + std::to_string(i) + "\n";
+  const std::string text = "ply\nformat ascii 1.0\n" + lines +
+                           "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                           "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                           "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const test::TempDir dir("ply");
+  const std::string path = test::write_text(dir.path() / "notes.ply", text);
+  Scene scene;
+  EXPECT_EQ(load_ply(path, scene, 0).triangles, 1u);
+  ASSERT_EQ(scene.warnings.size(), 6u);
+  EXPECT_EQ(scene.warnings[4], path + ":7:1: header line 'note 4' starts with no PLY keyword; skipped");
+  EXPECT_EQ(scene.warnings[5], path + ": 3 more such header lines skipped");
+}
+
+TEST(PlyLoader, APropertyAfterASkippedLineIsRefused) {
+  // "elemnt" is skipped; its property must not become a fourth property of the vertices.
+  const std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "elemnt face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  expect_error(text, "mesh.ply:8:1: ",
+               "a property after the skipped header line 'elemnt face 1' (line 7), which starts with no PLY "
+               "keyword: is it a misspelt 'element'?");
+  // Still refused from a file, with the file named.
+  const test::TempDir dir("ply");
+  const std::string path = test::write_text(dir.path() / "typo.ply", text);
+  Scene scene;
+  const std::string message = test::thrown_message([&] { load_ply(path, scene, 0); });
+  EXPECT_EQ(message.rfind(path + ":8:1: ", 0), 0u) << message;
+}
+
+TEST(PlyLoader, CorruptElementLineInAFileIsStillRefused) {
+  const test::TempDir dir("ply");
+  const std::string path = test::write_text(
+      dir.path() / "corrupt.ply",
+      "ply\nformat ascii 1.0\ncomment fine\nelement vertex 4x\nproperty float x\nend_header\n0\n1\n2\n3\n");
+  Scene scene;
+  const std::string message = test::thrown_message([&] { load_ply(path, scene, 0); });
+  test::expect_message(message, path + ":4:16: ", "expected an element count (a non-negative integer), found '4x'");
+  EXPECT_TRUE(scene.warnings.empty());
 }
 
 TEST(PlyLoader, NegativeListLengthInBinary) {

@@ -43,7 +43,12 @@ struct GltfLoadOptions {
 /// nodes, meshes, materials, textures, images or cameras out of range, accessor types or
 /// component types that do not fit their use, data outside its buffer view or buffer, index
 /// values past the vertex count, non-finite numbers, node cycles, a buffer or image URI outside
-/// the folder (unless allowed) or missing, and malformed JSON or GLB containers.
+/// the folder (unless allowed) or missing, and malformed JSON or GLB containers. Files raylab
+/// cannot read whatever their data are refused with the cause named (not a symptom of it): a
+/// glTF 1.0 file (asset.version "1.0", a version 1 GLB, or top-level objects keyed by name where
+/// glTF 2.0 has arrays), any other asset.version but 2.x, any extension in extensionsRequired
+/// (raylab supports none: Draco, meshopt, quantisation, Basis textures, texture transforms change
+/// what the data mean), and a Draco-compressed primitive without an uncompressed copy.
 void load_gltf(const std::string& path, Scene& scene, const GltfLoadOptions& options = {});
 
 }  // namespace raylab

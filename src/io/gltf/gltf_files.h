@@ -1,7 +1,9 @@
 #pragma once
 // Internal to the glTF reader: parsing the file with tinygltf through raylab's own file-system
 // and image callbacks, which keep every buffer and image URI inside the glTF file's folder
-// (unless allowed) and keep images encoded until a material uses them.
+// (unless allowed) and keep images encoded until a material uses them; and refusing, with their
+// cause named, the files tinygltf misreads or fails on with a message about a symptom (glTF 1.0,
+// other versions, required extensions, Draco-compressed meshes).
 
 #include <map>
 #include <string>
@@ -20,8 +22,14 @@ struct CallbackContext {
 };
 
 /// Parses the .gltf or .glb file `path` (told apart by content) with tinygltf through raylab's
-/// callbacks. Throws InputError for a malformed file or container, or a URI that leaves the
-/// folder when `ctx.allow_outside` is off.
+/// callbacks. Throws InputError for a malformed file or container, a URI that leaves the folder
+/// when `ctx.allow_outside` is off, or a file raylab cannot read whatever its data: a glTF
+/// version other than 2.x (glTF 1.0 named as such), an extension in extensionsRequired (raylab
+/// supports none), or a Draco-compressed primitive without an uncompressed copy.
 tinygltf::Model parse_gltf(const std::string& path, CallbackContext& ctx);
+
+/// Why a glTF 1.0 file is refused and what to do about it, for messages that first say how the
+/// file showed its version.
+std::string gltf1_refusal();
 
 }  // namespace raylab::gltf_detail

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 
+#include "gltf_files.h"
 #include "raylab/core/error.h"
 
 namespace raylab::gltf_detail {
@@ -17,7 +18,9 @@ std::uint32_t read_le32(const unsigned char* p) {
 std::size_t checked_glb_length(const std::string& path, std::span<const unsigned char> bytes) {
   if (bytes.size() < 20)
     throw InputError(path, "too short for a glTF binary (" + std::to_string(bytes.size()) + " bytes)");
-  if (const std::uint32_t version = read_le32(bytes.data() + 4); version != 2) {
+  const std::uint32_t version = read_le32(bytes.data() + 4);
+  if (version == 1) throw InputError::at_byte(path, 4, "glTF binary version 1: " + gltf1_refusal());
+  if (version != 2) {
     throw InputError::at_byte(path, 4, "glTF binary version " + std::to_string(version) + " (raylab reads version 2)");
   }
   const std::uint64_t length = read_le32(bytes.data() + 8);
@@ -38,6 +41,10 @@ std::size_t checked_glb_length(const std::string& path, std::span<const unsigned
     }
   }
   return static_cast<std::size_t>(length);
+}
+
+std::string_view glb_json_chunk(std::span<const unsigned char> bytes) {
+  return {reinterpret_cast<const char*>(bytes.data()) + 20, read_le32(bytes.data() + 12)};
 }
 
 }  // namespace raylab::gltf_detail

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 namespace raylab::gltf_detail {
 namespace {
@@ -23,6 +24,18 @@ void map_metallic_roughness(double metallic, double roughness, Material& out) {
   out.ks = static_cast<float>(1.0 - roughness);
   out.reflectivity = static_cast<float>(metallic * (1.0 - roughness));
   out.kd = 1.f - out.reflectivity;
+}
+
+// The number `key` of material extension `extension` (KHR_materials_ior's "ior", say):
+// nullopt when the material does not use the extension or the extension does not give it, NaN
+// when it gives something that is not a finite number.
+std::optional<double> extension_number(const tinygltf::Material& in, const std::string& extension,
+                                       const std::string& key) {
+  const auto it = in.extensions.find(extension);
+  if (it == in.extensions.end() || !it->second.IsObject() || !it->second.Has(key)) return std::nullopt;
+  const tinygltf::Value& v = it->second.Get(key);
+  if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble())) return std::nan("");
+  return v.GetNumberAsDouble();
 }
 
 // glTF's own default (white, fully metallic, fully rough) would render as a black shape with a
@@ -69,6 +82,24 @@ Material GltfReader::convert_material(int index) {
   map_metallic_roughness(std::clamp(pbr.metallicFactor, 0.0, 1.0), std::clamp(pbr.roughnessFactor, 0.0, 1.0), out);
   const auto& e = in.emissiveFactor;
   out.emission = {static_cast<float>(e[0]), static_cast<float>(e[1]), static_cast<float>(e[2])};
+  // The physically based model keeps the file's values (the path integrator reads them; Whitted
+  // reads the Phong members above). The extensions' defaults are the specification's.
+  out.model = MaterialModel::kMetallicRoughness;
+  out.metallic = static_cast<float>(std::clamp(pbr.metallicFactor, 0.0, 1.0));
+  out.roughness = static_cast<float>(std::clamp(pbr.roughnessFactor, 0.0, 1.0));
+  const auto number = [&](const std::string& extension, const std::string& key, double fallback) {
+    const std::optional<double> v = extension_number(in, extension, key);
+    if (!v) return fallback;
+    if (std::isnan(*v)) fail(element, "extensions." + extension + "." + key + " must be a finite number");
+    return *v;
+  };
+  out.transmission =
+      static_cast<float>(std::clamp(number("KHR_materials_transmission", "transmissionFactor", 0.0), 0.0, 1.0));
+  out.emission_strength =
+      static_cast<float>(std::max(0.0, number("KHR_materials_emissive_strength", "emissiveStrength", 1.0)));
+  // ior 0 is the extension's way to say "a perfect reflector" (no transmission); raylab's
+  // dielectrics need an index above 1.
+  if (const double ior = number("KHR_materials_ior", "ior", 1.5); ior >= 1.0) out.ior = static_cast<float>(ior);
   // Blended alpha is see-through coverage: light passes straight on (ior 1), not refracted.
   if (in.alphaMode == "BLEND") {
     out.transmittance = static_cast<float>(1.0 - std::clamp(c[3], 0.0, 1.0));

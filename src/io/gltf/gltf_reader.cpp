@@ -5,7 +5,6 @@
 namespace raylab::gltf_detail {
 
 void GltfReader::read() {
-  check_required_extensions();
   const std::vector<int> roots = root_nodes();
   traverse(roots);
   if (m_report.degenerate_dropped > 0) {
@@ -23,12 +22,6 @@ void GltfReader::check_index(int index, std::size_t size, const std::string& ele
   if (index < 0 || static_cast<std::size_t>(index) >= size) {
     fail(element, std::string(array) + " index " + std::to_string(index) + " out of range (the file has " +
                       std::to_string(size) + ")");
-  }
-}
-
-void GltfReader::check_required_extensions() const {
-  for (const std::string& name : m_model.extensionsRequired) {
-    fail("extensionsRequired", "the file needs extension " + name + ", which raylab does not support");
   }
 }
 

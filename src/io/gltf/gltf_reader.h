@@ -22,7 +22,8 @@
 
 namespace raylab::gltf_detail {
 
-/// Reads one parsed glTF model into a scene; see load_gltf for what is read and refused.
+/// Reads one parsed glTF model into a scene; see load_gltf for what is read and refused. The
+/// version and the required extensions were checked by parse_gltf.
 class GltfReader {
  public:
   /// Reads `model`, parsed from `path` with the callbacks' `ctx`, into `scene`.
@@ -42,10 +43,6 @@ class GltfReader {
   void warn(const std::string& message);
   /// Checks that `index` names one of `size` elements of array `array`.
   void check_index(int index, std::size_t size, const std::string& element, const char* array) const;
-  /// Refuses the extensions the file cannot be read without: they change geometry or images in
-  /// ways raylab does not know (Draco, meshopt, quantisation, Basis textures, texture
-  /// transforms), and showing something else would be wrong.
-  void check_required_extensions() const;
 
   // --- Scene graph and camera (gltf_scene_graph.cpp)
 

@@ -103,6 +103,34 @@ std::uint64_t min_record_bytes(const Element& e, bool ascii) {
   return n;
 }
 
+// Skipped header lines listed one by one in the warnings; the rest are counted. A binary body
+// read as header for want of an `end_header` must not make thousands of warnings.
+constexpr std::size_t kSkippedListed = 5;
+
+// Skips the rest of the line that `first` starts, which is no PLY keyword, noting it in `header`;
+// returns it.
+SkippedLine skip_unknown_line(TextScanner& s, const Token& first, Header& header) {
+  std::string_view text = first.text;
+  for (Token t = s.next_on_line(); !t.text.empty(); t = s.next_on_line()) {
+    text = std::string_view(first.text.data(),
+                            static_cast<std::size_t>(t.text.data() + t.text.size() - first.text.data()));
+  }
+  s.skip_line();
+  const SkippedLine skipped{quoted(text), first.line, first.col};
+  if (header.skipped.size() < kSkippedListed) header.skipped.push_back(skipped);
+  ++header.skipped_count;
+  return skipped;
+}
+
+// For a refusal after skipped lines: the first of them, which may be what went wrong.
+std::string skipped_note(const Header& header) {
+  if (header.skipped_count == 0) return "";
+  const SkippedLine& first = header.skipped.front();
+  return " (" + std::to_string(header.skipped_count) + " header line" + (header.skipped_count == 1 ? "" : "s") +
+         " starting with no PLY keyword skipped, the first " + first.text + " at line " + std::to_string(first.line) +
+         ")";
+}
+
 }  // namespace
 
 Header parse_header(TextScanner& s) {
@@ -111,7 +139,9 @@ Header parse_header(TextScanner& s) {
   end_of_line(s);
   Header header;
   bool have_format = false;
+  std::optional<SkippedLine> skipped_since_element;
   for (;;) {
+    if (s.at_end()) s.fail_here("unexpected end of file, expected 'end_header'" + skipped_note(header));
     const Token key = s.next("'end_header'");
     if (key.text == "end_header") {
       if (!have_format) s.fail(key, "the header has no 'format' line");
@@ -128,14 +158,34 @@ Header parse_header(TextScanner& s) {
       have_format = true;
     } else if (key.text == "element") {
       header.elements.push_back(parse_element(s));
+      skipped_since_element.reset();
     } else if (key.text == "property") {
+      if (skipped_since_element) {
+        s.fail(key, "a property after the skipped header line " + skipped_since_element->text + " (line " +
+                        std::to_string(skipped_since_element->line) +
+                        "), which starts with no PLY keyword: is it a misspelt 'element'?");
+      }
       if (header.elements.empty()) s.fail(key, "a property before any element");
       header.elements.back().properties.push_back(parse_property(s));
     } else {
-      s.fail(key, "unknown PLY header line " + quoted(key.text));
+      skipped_since_element = skip_unknown_line(s, key, header);
+      continue;
     }
     end_of_line(s);
   }
+}
+
+std::vector<std::string> skipped_line_warnings(const Header& header, const std::string& file) {
+  std::vector<std::string> out;
+  for (const SkippedLine& l : header.skipped) {
+    out.push_back(file + ":" + std::to_string(l.line) + ":" + std::to_string(l.col) + ": header line " + l.text +
+                  " starts with no PLY keyword; skipped");
+  }
+  if (header.skipped_count > header.skipped.size()) {
+    out.push_back(file + ": " + std::to_string(header.skipped_count - header.skipped.size()) +
+                  " more such header lines skipped");
+  }
+  return out;
 }
 
 void check_counts(const Header& header, std::uint64_t body_bytes, const std::string& file) {

@@ -2,6 +2,7 @@
 // Internal to the PLY reader: the header (format, elements and their properties), parsed before
 // any of the body is read, and the check that its element counts can fit in the body.
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -31,14 +32,29 @@ struct Element {
 /// How the body is stored.
 enum class Encoding { kAscii, kLittleEndian, kBigEndian };
 
+/// A header line that starts with no PLY keyword (exporters write lines such as `Created by
+/// ...`), skipped.
+struct SkippedLine {
+  std::string text;  ///< the line, quoted for a message
+  int line = 0, col = 0;
+};
+
 /// What the header declares.
 struct Header {
   Encoding encoding = Encoding::kAscii;
   std::vector<Element> elements;
+  std::vector<SkippedLine> skipped;  ///< the first few skipped lines
+  std::size_t skipped_count = 0;     ///< all of them
 };
 
-/// Reads the header; leaves `s` at the first byte of the body. Fails at the offending token.
+/// Reads the header; leaves `s` at the first byte of the body. Fails at the offending token. A
+/// line that starts with no PLY keyword is skipped, but a property after it (before the next
+/// element) is refused: the line may have been a misspelt `element`, whose properties must not
+/// be given to the element before it.
 Header parse_header(TextScanner& s);
+
+/// One warning `file:line:col: ...` for each skipped header line, and one for those not listed.
+std::vector<std::string> skipped_line_warnings(const Header& header, const std::string& file);
 
 /// Refuses element counts that `body_bytes` bytes of body cannot hold, before anything is
 /// allocated for them.
