@@ -94,7 +94,8 @@ Scene make_showcase_scene() {
   }
   Material ground = pbr("ground", MaterialModel::kDiffuse, {0.75f, 0.75f, 0.72f});
   ground.texture = Texture(Texture::Kind::kChecker, Color{0.35f, 0.35f, 0.33f}, 1.f);
-  scene.geometry.add(Quad{Vec3{-30.f, 0.f, -30.f}, Vec3{0.f, 0.f, 60.f}, Vec3{60.f, 0.f, 0.f}},
+  // Wide enough that it meets the sky at the horizon.
+  scene.geometry.add(Quad{Vec3{-500.f, 0.f, -500.f}, Vec3{0.f, 0.f, 1000.f}, Vec3{1000.f, 0.f, 0.f}},
                      scene.add_object("ground", scene.add_material(ground)));
 
   auto sky = std::make_shared<Environment>();

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -232,6 +233,30 @@ TEST(PathIntegrator, ImageIsTheSameForAnyThreadCount) {
   Color sum{0.f};
   for (const Color& c : films[0].pixels()) sum += c;
   EXPECT_GT(sum.y, 0.05f * static_cast<float>(films[0].pixels().size()));
+}
+
+TEST(PathIntegrator, ShowcaseHoldsEveryModelAndRendersUnderItsSky) {
+  Scene s = make_builtin_scene("showcase");
+  EXPECT_EQ(s.settings.integrator, "path");
+  ASSERT_TRUE(s.environment);
+  for (MaterialModel m :
+       {MaterialModel::kDiffuse, MaterialModel::kPlastic, MaterialModel::kConductor, MaterialModel::kDielectric}) {
+    EXPECT_TRUE(std::any_of(s.materials.begin(), s.materials.end(), [&](const Material& x) { return x.model == m; }))
+        << static_cast<int>(m);
+  }
+  s.settings.width = 48;
+  s.settings.height = 18;
+  s.settings.spp = 4;
+  const std::unique_ptr<Accelerator> accel = make_accelerator("bvh", s.geometry);
+  Film film(s.settings.width, s.settings.height);
+  RenderOptions options;
+  options.threads = 2;
+  const RenderResult r = render(s, *accel, film, options);
+  EXPECT_EQ(r.stats.nonfinite_samples, 0u);
+  // The sky lights the ground: the bottom row is bright.
+  Color bottom{0.f};
+  for (int x = 0; x < s.settings.width; ++x) bottom += film.at(x, s.settings.height - 1);
+  EXPECT_GT(bottom.y / static_cast<float>(s.settings.width), 0.2f);
 }
 
 TEST(PathIntegrator, UnknownIntegratorNamesTheValidOnes) {
