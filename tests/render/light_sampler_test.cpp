@@ -1,0 +1,145 @@
+// The path integrator's light sampling against its own density, by a chi-square test as for the
+// BSDFs: from a point, the directions LightSampler::sample draws toward emissive triangles,
+// quads, disks and spheres (one at a time, and two lights chosen by power) must follow the
+// density emitter_pdf gives the point each direction reaches.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "../../src/render/light/light_sampler.h"
+#include "raylab/accel/factory.h"
+#include "raylab/core/rng.h"
+#include "raylab/geometry/shading.h"
+#include "sphere_chi2.h"
+
+namespace raylab {
+namespace {
+
+using detail::LightSampler;
+
+// A scene whose only emitters are what `add` puts in it (material emission 1), seen from the
+// origin.
+template <class Add>
+Scene emitters(Add add) {
+  Scene s;
+  Material lamp;
+  lamp.emission = {1.f, 1.f, 1.f};
+  const std::uint32_t object = s.add_object("lamp", s.add_material(lamp));
+  add(s.geometry, object);
+  return s;
+}
+
+// Quadrature parts per cell side: a light's outline crosses cells, where the density jumps.
+constexpr int kSplit = 16;
+
+// Pearson's test of `samples` light samples from the origin against the density of the
+// direction each reaches; p-value.
+double light_sampling_p_value(const Scene& scene, int samples, std::uint64_t seed) {
+  const LightSampler lights(scene);
+  const std::unique_ptr<Accelerator> accel = make_accelerator("brute", scene.geometry);
+  const Vec3 from{0.f, 0.f, 0.f};
+  const test::SphereGrid grid{16, 32};
+  Pcg32 rng(seed);
+  const auto observed = test::observed_counts(grid, samples, [&]() -> std::optional<Vec3> {
+    const float u_choice = rng.next_float();
+    const Sample2 u{rng.next_float(), rng.next_float()};
+    const std::optional<detail::LightSample> ls = lights.sample(from, u_choice, u);
+    if (!ls) return std::nullopt;
+    return ls->wi;
+  });
+  const auto expected = test::expected_counts(
+      grid, samples,
+      [&](Vec3 dir) {
+        Ray ray;
+        ray.origin = from;
+        ray.direction = dir;
+        Hit hit;
+        if (!accel->intersect(ray, hit)) return 0.f;
+        const SurfaceInteraction si = surface_at(scene, ray, hit);
+        if (!si.front_face) return 0.f;  // emitters light their front side only
+        return lights.emitter_pdf(from, hit.prim_id, si.position, si.geometric_normal);
+      },
+      kSplit);
+  const test::Chi2Result r = test::pearson(observed, expected);
+  EXPECT_TRUE(r.failure.empty()) << r.failure;
+  std::printf("  chi2 light sampling: statistic %9.1f dof %4d p %.4f\n", r.statistic, r.dof, r.p_value);
+  return r.p_value;
+}
+
+// Sidak's level for the cases of this file, so that all pass by chance with probability 0.99.
+constexpr int kCases = 5;
+const double kLevel = 1.0 - std::pow(0.99, 1.0 / kCases);
+
+TEST(LightSamplerChi2, TriangleQuadDiskAndSphereEmitters) {
+  // Each faces the origin (a triangle's front by its winding); big and near, so that the
+  // directions they cover span many cells.
+  const Scene triangle = emitters([](Geometry& g, std::uint32_t o) {
+    g.add(Triangle{{-1.f, -1.f, 0.5f}, {0.f, 1.f, 0.5f}, {1.f, -1.f, 0.5f}}, o);
+  });
+  const Scene quad = emitters([](Geometry& g, std::uint32_t o) {
+    g.add(Quad{{-1.f, -0.5f, 0.6f}, {0.f, 2.f, 0.f}, {1.5f, 0.f, 0.2f}}, o);
+  });
+  const Scene disk = emitters([](Geometry& g, std::uint32_t o) {
+    g.add(Disk{{0.3f, 0.f, 0.7f}, normalize(Vec3{0.2f, 0.f, -1.f}), 1.f}, o);
+  });
+  // A sphere's far side faces away: those samples give no light (the last cell).
+  const Scene sphere = emitters([](Geometry& g, std::uint32_t o) { g.add(Sphere{{0.f, 0.4f, 1.5f}, 1.f}, o); });
+  int seed = 1;
+  for (const Scene* s : {&triangle, &quad, &disk, &sphere}) {
+    const double p = light_sampling_p_value(*s, 200000, static_cast<std::uint64_t>(seed++));
+    EXPECT_GT(p, kLevel) << "case " << seed - 1;
+  }
+}
+
+TEST(LightSamplerChi2, TwoLightsChosenByPower) {
+  // A bright small triangle and a dim large quad on either side: the choice by power and each
+  // light's own density together must give the mixture's density.
+  Scene s;
+  Material bright, dim;
+  bright.emission = {8.f, 8.f, 8.f};
+  dim.emission = {0.5f, 0.5f, 0.5f};
+  s.geometry.add(Triangle{{-0.5f, -0.5f, 0.8f}, {0.f, 0.5f, 0.8f}, {0.5f, -0.5f, 0.8f}},
+                 s.add_object("bright", s.add_material(bright)));
+  s.geometry.add(Quad{{-1.f, -1.f, -0.7f}, {2.f, 0.f, 0.f}, {0.f, 2.f, 0.f}}, s.add_object("dim", s.add_material(dim)));
+  EXPECT_GT(light_sampling_p_value(s, 200000, 99), kLevel);
+}
+
+TEST(LightSamplerChi2, RejectsADensityThatIsSlightlyWrong) {
+  // The test can fail: a quad whose density is taken for 10% more area than it has.
+  const Scene quad = emitters([](Geometry& g, std::uint32_t o) {
+    g.add(Quad{{-1.f, -0.5f, 0.6f}, {0.f, 2.f, 0.f}, {1.5f, 0.f, 0.2f}}, o);
+  });
+  const Scene wider = emitters([](Geometry& g, std::uint32_t o) {
+    g.add(Quad{{-1.f, -0.5f, 0.6f}, {0.f, 2.2f, 0.f}, {1.5f, 0.f, 0.2f}}, o);
+  });
+  const LightSampler lights(quad), wrong(wider);
+  const std::unique_ptr<Accelerator> accel = make_accelerator("brute", wider.geometry);
+  const test::SphereGrid grid{16, 32};
+  Pcg32 rng(5);
+  const auto observed = test::observed_counts(grid, 200000, [&]() -> std::optional<Vec3> {
+    const float u_choice = rng.next_float();
+    const Sample2 u{rng.next_float(), rng.next_float()};
+    const auto ls = lights.sample(Vec3{0.f}, u_choice, u);
+    return ls ? std::optional<Vec3>(ls->wi) : std::nullopt;
+  });
+  const auto expected = test::expected_counts(
+      grid, 200000,
+      [&](Vec3 dir) {
+        Ray ray;
+        ray.direction = dir;
+        Hit hit;
+        if (!accel->intersect(ray, hit)) return 0.f;
+        const SurfaceInteraction si = surface_at(wider, ray, hit);
+        return wrong.emitter_pdf(Vec3{0.f}, hit.prim_id, si.position, si.geometric_normal);
+      },
+      kSplit);
+  EXPECT_LT(test::pearson(observed, expected).p_value, 1e-6);
+}
+
+}  // namespace
+}  // namespace raylab
