@@ -4,6 +4,7 @@
 #include <functional>
 
 #include "raylab/io/texture_io.h"
+#include "raylab/scene/environment.h"
 
 namespace raylab {
 namespace {
@@ -152,11 +153,18 @@ std::vector<std::string> mesh_losses(const Scene& scene, bool obj, bool fitted_v
 }  // namespace
 
 std::vector<std::string> format_losses(const Scene& scene, std::string_view extension, bool fitted_view) {
-  if (extension == ".nff") return nff_losses(scene);
-  if (extension == ".obj") return mesh_losses(scene, true, fitted_view);
-  if (extension == ".ply") return mesh_losses(scene, false, fitted_view);
   std::vector<std::string> out;
-  add_texture_losses(out, scene, true);
+  if (extension == ".nff") {
+    out = nff_losses(scene);
+  } else if (extension == ".obj") {
+    out = mesh_losses(scene, true, fitted_view);
+  } else if (extension == ".ply") {
+    out = mesh_losses(scene, false, fitted_view);
+  } else {
+    add_texture_losses(out, scene, true);
+  }
+  // The environment: a scene file carries a constant one, no format its image (yet).
+  if (scene.environment && (scene.environment->image || extension != ".json")) out.emplace_back("environment");
   return out;
 }
 

@@ -1,13 +1,16 @@
 #include "raylab/io/scene_json.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <map>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 #include "json_document.h"
+#include "material_model_names.h"
 #include "raylab/core/error.h"
 #include "raylab/io/environment_io.h"
 #include "raylab/io/read_file.h"
@@ -58,6 +61,7 @@ class SceneReader {
     if (root.has("meshes")) read_meshes(root.child("meshes", "'meshes'"));
     if (!root.has("objects")) root.fail("the scene needs 'objects' (an array)");
     read_objects(root.child("objects", "'objects'"));
+    resolve_light_objects();
     if (m_scene.primitive_count() == 0) root.fail_at("objects", "the scene has no primitives");
     const bool has_camera = root.has("camera");
     const bool has_lights = root.has("lights");
@@ -134,18 +138,10 @@ class SceneReader {
   // The physically based part of a material: its "type" and that model's parameters (the
   // Phong keys above stay what Whitted shades; docs/scene-format.md).
   static void read_material_model(const Node& m, Material& mat) {
-    static constexpr std::array<std::pair<std::string_view, MaterialModel>, 6> kModels = {{
-        {"phong", MaterialModel::kPhong},
-        {"diffuse", MaterialModel::kDiffuse},
-        {"conductor", MaterialModel::kConductor},
-        {"dielectric", MaterialModel::kDielectric},
-        {"plastic", MaterialModel::kPlastic},
-        {"metallic_roughness", MaterialModel::kMetallicRoughness},
-    }};
     std::vector<std::string_view> names;
-    for (const auto& [name, model] : kModels) names.push_back(name);
+    for (const auto& [name, model] : detail::kMaterialModelNames) names.push_back(name);
     const std::string type = m.choice("type", names, "phong");
-    for (const auto& [name, model] : kModels) {
+    for (const auto& [name, model] : detail::kMaterialModelNames) {
       if (name == type) mat.model = model;
     }
     mat.roughness = static_cast<float>(m.real("roughness", mat.roughness, 0.0, 1.0));
@@ -241,21 +237,34 @@ class SceneReader {
         if (!(dot(light.direction, light.direction) > 0.f)) l.fail_at("direction", "'direction' must not be zero");
         light.direction = normalize(light.direction);
       } else if (type == "sphere") {
-        l.check_keys({"type", "center", "radius", "intensity", "falloff", "samples"});
+        l.check_keys({"type", "center", "radius", "intensity", "falloff", "samples", "object"});
         light.kind = Light::Kind::kSphere;
         light.position = l.vec3("center");
         light.radius = l.real("radius", kRequired, 0.0);
         light.falloff = l.boolean("falloff", false);
         light.samples = static_cast<int>(l.integer("samples", light.samples, 1, 4096));
       } else {
-        l.check_keys({"type", "corner", "edge_u", "edge_v", "intensity", "samples"});
+        l.check_keys({"type", "corner", "edge_u", "edge_v", "intensity", "samples", "object"});
         light.kind = Light::Kind::kQuad;
         light.position = l.vec3("corner");
         light.edge_u = l.vec3("edge_u");
         light.edge_v = l.vec3("edge_v");
         light.samples = static_cast<int>(l.integer("samples", light.samples, 1, 4096));
       }
+      if (l.has("object")) m_light_objects.emplace_back(m_scene.lights.size(), l, l.string("object"));
       m_scene.lights.push_back(light);
+    }
+  }
+
+  // The objects that sphere and quad lights name as their visible surface ("object"), once the
+  // objects are read: the path integrator lights the scene from the object and skips the light.
+  void resolve_light_objects() {
+    for (const auto& [light, node, name] : m_light_objects) {
+      const auto& objects = m_scene.objects;
+      const auto it =
+          std::find_if(objects.begin(), objects.end(), [&](const SceneObject& o) { return o.name == name; });
+      if (it == objects.end()) node.fail_at("object", "no object is named '" + name + "'");
+      m_scene.lights[light].object = static_cast<std::int32_t>(it - objects.begin());
     }
   }
 
@@ -483,7 +492,8 @@ class SceneReader {
   LoadOptions m_options;
   Scene m_scene;
   std::map<std::string, std::uint32_t> m_materials;
-  std::map<std::string, Scene> m_meshes;  // loaded once, placed by every instance
+  std::vector<std::tuple<std::size_t, Node, std::string>> m_light_objects;  // light, where named, object name
+  std::map<std::string, Scene> m_meshes;                                    // loaded once, placed by every instance
   struct PrototypeInfo {
     std::uint32_t index = 0;               // into Scene::prototypes
     std::vector<std::uint32_t> materials;  // the mesh's materials, as added to the scene

@@ -4,11 +4,13 @@
 
 #include <map>
 
+#include "material_model_names.h"
 #include "raylab/core/error.h"
 #include "raylab/io/float_text.h"
 #include "raylab/io/mtl_writer.h"
 #include "raylab/io/ply_writer.h"
 #include "raylab/io/texture_io.h"
+#include "raylab/scene/environment.h"
 
 namespace raylab {
 namespace {
@@ -119,6 +121,7 @@ void render(JsonText& j, const RenderSettings& s) {
   j.key("max_depth").integer(s.max_depth).key("seed").integer(static_cast<long long>(s.seed));
   j.key("background").vec(s.background).key("ambient").vec(s.ambient);
   j.key("sky_gradient").boolean(s.sky_gradient).key("horizon").vec(s.horizon);
+  j.key("integrator").string(s.integrator);
   j.close('}');
 }
 
@@ -148,6 +151,10 @@ void materials(JsonText& j, const Scene& scene, const std::vector<std::string>& 
     j.key("color").vec(m.color).key("kd").number(m.kd).key("ks").number(m.ks).key("shininess").number(m.shininess);
     j.key("reflectivity").number(m.reflectivity).key("transmittance").number(m.transmittance);
     j.key("ior").number(m.ior).key("emission").vec(m.emission).key("fresnel").boolean(m.fresnel);
+    // The physically based model's members, every one (a reader's defaults may change).
+    j.key("type").string(std::string(detail::material_model_name(m.model))).key("roughness").number(m.roughness);
+    j.key("metallic").number(m.metallic).key("transmission").number(m.transmission);
+    j.key("eta").vec(m.conductor_eta).key("k").vec(m.conductor_k).key("emission_strength").number(m.emission_strength);
     if (m.texture.kind == Texture::Kind::kChecker) {
       j.key("texture").open('{').key("type").string("checker").key("color2").vec(m.texture.color2);
       j.key("scale").number(m.texture.scale).close('}');
@@ -160,7 +167,7 @@ void materials(JsonText& j, const Scene& scene, const std::vector<std::string>& 
   j.close('}');
 }
 
-void lights(JsonText& j, const std::vector<Light>& lights) {
+void lights(JsonText& j, const std::vector<Light>& lights, const std::vector<SceneObject>& objects) {
   j.key("lights").open('[', true);
   for (const Light& l : lights) {
     j.open('{');
@@ -180,7 +187,11 @@ void lights(JsonText& j, const std::vector<Light>& lights) {
         j.key("edge_v").vec(l.edge_v).key("samples").integer(l.samples);
         break;
     }
-    j.key("intensity").vec(l.intensity).close('}');
+    j.key("intensity").vec(l.intensity);
+    if (l.object >= 0 && static_cast<std::size_t>(l.object) < objects.size()) {
+      j.key("object").string(objects[static_cast<std::size_t>(l.object)].name);
+    }
+    j.close('}');
   }
   j.close(']');
 }
@@ -242,6 +253,8 @@ class ObjectWriter {
  private:
   JsonText& start(const char* type, std::uint32_t object) {
     m_j.open('{').key("type").string(type);
+    // The object's name, which a light's "object" refers to.
+    if (object < m_scene.objects.size()) m_j.key("name").string(m_scene.objects[object].name);
     material(object);
     return m_j;
   }
@@ -270,7 +283,12 @@ SceneJsonFiles encode_scene_json(const Scene& scene, const std::string& stem) {
   camera(j, scene);
   render(j, scene.settings);
   materials(j, scene, names, texture_files(scene, stem, files.textures));
-  lights(j, scene.lights);
+  lights(j, scene.lights, scene.objects);
+  if (scene.environment && !scene.environment->image) {
+    const Environment& e = *scene.environment;
+    j.key("environment").open('{').key("color").vec(e.color).key("rotate").number(e.rotate_degrees);
+    j.key("scale").number(e.scale).close('}');
+  }
   j.key("objects").open('[', true);
   ObjectWriter objects(j, scene, names);
   objects.meshes(stem, files.meshes);

@@ -13,10 +13,14 @@
 #include "../test_paths.h"
 #include "raylab/accel/factory.h"
 #include "raylab/core/error.h"
+#include "raylab/io/format_losses.h"
 #include "raylab/io/scene_json.h"
+#include "raylab/io/scene_json_writer.h"
 #include "raylab/io/scene_loader.h"
 #include "raylab/render/renderer.h"
+#include "raylab/scene/builtin_scenes.h"
 #include "raylab/scene/camera_path.h"
+#include "raylab/scene/environment.h"
 #include "raylab/scene/scene_merge.h"
 #include "raylab/scene/spd.h"
 
@@ -353,6 +357,56 @@ TEST(SceneJson, SpdSizesOverTheCallersLimitAreRefusedAtTheObject) {
   EXPECT_EQ(error_of(R"({"version": 1, "objects": [{"type": "spd", "generator": "balls", "size": 2}]})", ".", capped),
             "");
   EXPECT_EQ(error_of(by_default), "");
+}
+
+TEST(SceneJson, PhysicallyBasedMembersLightObjectsAndEnvironmentRoundTrip) {
+  // A lamp as in the Cornell box: a quad light that names the emissive quad drawing it.
+  Scene cornell;
+  Material lamp;
+  lamp.emission = {1.f, 0.85f, 0.6f};
+  lamp.emission_strength = 15.f;
+  const std::uint32_t lamp_object = cornell.add_object("light", cornell.add_material(lamp));
+  cornell.geometry.add(Quad{{0.f, 1.f, 0.f}, {0.f, 0.f, 1.f}, {1.f, 0.f, 0.f}}, lamp_object);
+  Light area;
+  area.kind = Light::Kind::kQuad;
+  area.object = static_cast<std::int32_t>(lamp_object);
+  cornell.lights = {area};
+  cornell.settings.integrator = "path";
+  auto env = std::make_shared<Environment>();
+  env->color = {0.1f, 0.2f, 0.3f};
+  env->rotate_degrees = 15.f;
+  cornell.environment = env;
+  const Scene back = parse_scene_json(encode_scene_json(cornell, "c").json, "c.json", ".");
+  EXPECT_EQ(back.settings.integrator, "path");
+  ASSERT_EQ(back.lights.size(), 1u);
+  ASSERT_GE(back.lights[0].object, 0);
+  EXPECT_EQ(back.objects[static_cast<std::size_t>(back.lights[0].object)].name, "light");
+  EXPECT_EQ(back.materials[0].emission_strength, 15.f);
+  ASSERT_TRUE(back.environment);
+  EXPECT_EQ(back.environment->color, env->color);
+  EXPECT_EQ(back.environment->rotate_degrees, 15.f);
+  const Scene showcase = make_builtin_scene("showcase");
+  Scene flat = showcase;
+  flat.environment.reset();  // an image environment is a loss of the format, reported apart
+  const Scene materials = parse_scene_json(encode_scene_json(flat, "s").json, "s.json", ".");
+  // Materials come back in the file's (alphabetical) order: compare object by object.
+  ASSERT_EQ(materials.objects.size(), showcase.objects.size());
+  for (std::size_t i = 0; i < showcase.objects.size(); ++i) {
+    const Material& a = showcase.materials[showcase.objects[i].material];
+    const Material& b = materials.materials[materials.objects[i].material];
+    EXPECT_EQ(a.model, b.model) << a.name;
+    EXPECT_EQ(a.roughness, b.roughness) << a.name;
+    EXPECT_EQ(a.conductor_eta, b.conductor_eta) << a.name;
+    EXPECT_EQ(a.conductor_k, b.conductor_k) << a.name;
+  }
+  EXPECT_NE(losses_message("s.json", format_losses(showcase, ".json", false)).find("environment"), std::string::npos);
+}
+
+TEST(SceneJson, ALightNamingNoObjectIsRefused) {
+  const std::string text = R"({"version": 1, "materials": {"m": {}},
+    "lights": [{"type": "quad", "corner": [0, 1, 0], "edge_u": [1, 0, 0], "edge_v": [0, 0, 1], "object": "lamp"}],
+    "objects": [{"type": "sphere", "material": "m", "center": [0, 0, 0], "radius": 1}]})";
+  EXPECT_NE(error_of(text).find("no object is named 'lamp'"), std::string::npos) << error_of(text);
 }
 
 }  // namespace
