@@ -109,6 +109,7 @@ LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
         if (!(area > 0.f)) break;
         const Color radiance = pi_i / area;
         m_lights.push_back({quad ? Kind::kLightQuad : Kind::kLightSphere, index, area, radiance});
+        m_has_light_shapes = true;
         power.push_back(luminance(radiance) * area * (quad ? 2.f : 1.f) * kPi);
         break;
       }
@@ -126,6 +127,7 @@ LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
 }
 
 float LightSampler::choice_probability(std::size_t i) const {
+  if (m_lights.size() == 1) return 1.f;  // as sample() takes it
   // The density of a bin's points over [0, 1) is n times the bin's probability.
   const auto n = static_cast<float>(m_choice->size());
   return m_choice->pdf((static_cast<float>(i) + 0.5f) / n) / n;
@@ -141,9 +143,15 @@ float LightSampler::area_pdf(Vec3 from, Vec3 at, Vec3 normal, float area, float 
 
 std::optional<LightSample> LightSampler::sample(Vec3 p, float u_choice, Sample2 u) const {
   if (m_lights.empty()) return std::nullopt;
-  const Distribution1D::Sample picked = m_choice->sample_continuous(u_choice);
-  const float choice = picked.pdf / static_cast<float>(m_choice->size());
-  const Entry& e = m_lights[static_cast<std::size_t>(picked.index)];
+  // One light needs no choice (the common case of a lamp or a sky: a CDF search saved per vertex).
+  std::size_t index = 0;
+  float choice = 1.f;
+  if (m_lights.size() > 1) {
+    const Distribution1D::Sample picked = m_choice->sample_continuous(u_choice);
+    index = static_cast<std::size_t>(picked.index);
+    choice = picked.pdf / static_cast<float>(m_choice->size());
+  }
+  const Entry& e = m_lights[index];
   LightSample ls;
   switch (e.kind) {
     case Kind::kPoint: {
@@ -230,6 +238,7 @@ Color LightSampler::emitted(std::uint32_t prim) const {
 
 std::optional<LightShapeHit> LightSampler::hit_light_shape(const Ray& ray, float tmax) const {
   std::optional<LightShapeHit> best;
+  if (!m_has_light_shapes) return best;
   for (std::size_t i = 0; i < m_lights.size(); ++i) {
     const Entry& e = m_lights[i];
     if (e.kind != Kind::kLightQuad && e.kind != Kind::kLightSphere) continue;

@@ -105,6 +105,7 @@ class LightSampler {
   std::vector<Color> m_emission_of_prim;      // emitted radiance of each flat primitive
   std::optional<EnvironmentLight> m_environment;
   std::int32_t m_environment_entry = -1;
+  bool m_has_light_shapes = false;  // any kLightQuad or kLightSphere entry (hit_light_shape's loop)
 };
 
 }  // namespace raylab::detail
