@@ -33,6 +33,8 @@ const char* light_kind(Light::Kind k) {
       return "sphere";
     case Light::Kind::kQuad:
       return "quad";
+    case Light::Kind::kSpot:
+      return "spot";
   }
   return "?";
 }

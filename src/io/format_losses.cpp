@@ -96,12 +96,14 @@ void add_tessellated(std::vector<std::string>& out, const Geometry& g) {
 
 std::vector<std::string> nff_losses(const Scene& scene) {
   std::vector<std::string> out;
-  std::size_t not_point = 0, falloff = 0;
+  std::size_t not_point = 0, spots = 0, falloff = 0;
   for (const Light& l : scene.lights) {
-    not_point += l.kind != Light::Kind::kPoint ? 1 : 0;
+    not_point += l.kind != Light::Kind::kPoint && l.kind != Light::Kind::kSpot ? 1 : 0;
+    spots += l.kind == Light::Kind::kSpot ? 1 : 0;
     falloff += l.falloff ? 1 : 0;
   }
   add_if(out, not_point, count(not_point, "directional or area light") + " (as point lights)");
+  add_if(out, spots, "cone of " + count(spots, "spot light"));
   add_if(out, falloff, "falloff of " + count(falloff, "light"));
   const auto& ms = scene.materials;
   const std::size_t emitting = count_if(ms, [](const Material& m) { return nonzero(m.emission); });

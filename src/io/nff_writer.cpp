@@ -115,6 +115,9 @@ class NffWriter {
     switch (l.kind) {
       case Light::Kind::kPoint:
         break;
+      case Light::Kind::kSpot:
+        comment("spot light approximated by a point light (NFF has no cone)");
+        break;
       case Light::Kind::kDirectional:
         position = distant_position(l.direction);
         comment("directional light approximated by a distant point light");

@@ -222,13 +222,23 @@ class SceneReader {
     for (std::size_t i = 0; i < n.value().size(); ++i) {
       const Node l = n.element(i, "light " + std::to_string(i));
       if (!l.value().is_object()) l.fail("a light must be an object");
-      const std::string type = l.choice("type", {"point", "directional", "sphere", "quad"});
+      const std::string type = l.choice("type", {"point", "spot", "directional", "sphere", "quad"});
       Light light;
       light.intensity = l.color("intensity", light.intensity);
       if (type == "point") {
         l.check_keys({"type", "position", "intensity", "falloff"});
         light.kind = Light::Kind::kPoint;
         light.position = l.vec3("position");
+        light.falloff = l.boolean("falloff", false);
+      } else if (type == "spot") {
+        l.check_keys({"type", "position", "direction", "angle", "blend", "intensity", "falloff"});
+        light.kind = Light::Kind::kSpot;
+        light.position = l.vec3("position");
+        light.direction = l.vec3("direction");
+        if (!(dot(light.direction, light.direction) > 0.f)) l.fail_at("direction", "'direction' must not be zero");
+        light.direction = normalize(light.direction);
+        light.spot_angle = l.real("angle", light.spot_angle, kPositive, 90.0);
+        light.spot_blend = l.real("blend", light.spot_blend, 0.0, 1.0);
         light.falloff = l.boolean("falloff", false);
       } else if (type == "directional") {
         l.check_keys({"type", "direction", "intensity"});

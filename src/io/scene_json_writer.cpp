@@ -178,6 +178,10 @@ void lights(JsonText& j, const std::vector<Light>& lights, const std::vector<Sce
       case Light::Kind::kDirectional:
         j.key("type").string("directional").key("direction").vec(l.direction);
         break;
+      case Light::Kind::kSpot:
+        j.key("type").string("spot").key("position").vec(l.position).key("direction").vec(l.direction);
+        j.key("angle").number(l.spot_angle).key("blend").number(l.spot_blend).key("falloff").boolean(l.falloff);
+        break;
       case Light::Kind::kSphere:
         j.key("type").string("sphere").key("center").vec(l.position).key("radius").number(l.radius);
         j.key("falloff").boolean(l.falloff).key("samples").integer(l.samples);

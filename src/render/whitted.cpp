@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "light/shape_sampling.h"
+#include "light/spot.h"
 #include "raylab/geometry/shading.h"
 #include "raylab/render/optics.h"
 
@@ -91,6 +92,11 @@ bool sample_light(const Light& light, int grid, int sx, int sy, const ShadingPoi
   }
   ls.radiance = light.intensity * (1.f / static_cast<float>(grid * grid));
   if (light.falloff && std::isfinite(ls.distance)) ls.radiance /= ls.distance * ls.distance;
+  if (light.kind == Light::Kind::kSpot) {
+    const float cone = detail::spot_factor(light, -ls.wi);
+    if (!(cone > 0.f)) return false;  // outside the cone: no light, no shadow ray
+    ls.radiance *= cone;
+  }
   // Only surfaces that face the light cast a shadow ray (SPD testing procedure, rule 10).
   if (dot(at.rule_n, ls.wi) <= 0.f || dot(at.rule_ng, ls.wi) <= 0.f) return false;
   shadow.origin = offset_origin(p, at.ng, ls.wi);

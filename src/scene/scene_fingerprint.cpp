@@ -97,6 +97,10 @@ void hash_light(Hasher& h, const Light& l) {
   h.number(l.falloff);
   h.number(l.samples);
   if (l.object >= 0) h.number(l.object);  // only when set: older fingerprints stay valid
+  if (l.kind == Light::Kind::kSpot) {
+    h.number(l.spot_angle);
+    h.number(l.spot_blend);
+  }
 }
 
 void hash_environment(Hasher& h, const Environment& e) {

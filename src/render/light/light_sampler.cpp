@@ -10,6 +10,7 @@
 #include "raylab/render/whitted.h"
 #include "raylab/scene/environment.h"
 #include "shape_sampling.h"
+#include "spot.h"
 
 namespace raylab::detail {
 namespace {
@@ -96,6 +97,13 @@ LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
         m_lights.push_back({Kind::kPoint, index, 0.f, pi_i});
         power.push_back(4.f * kPi * luminance(pi_i));
         break;
+      case Light::Kind::kSpot: {
+        // Its power: the solid angle of the cone (to the middle of the fade) times pi I.
+        const float half = std::clamp(light.spot_angle, 0.f, 90.f) * (1.f - 0.5f * light.spot_blend) * kPi / 180.f;
+        m_lights.push_back({Kind::kPoint, index, 0.f, pi_i});
+        power.push_back(2.f * kPi * (1.f - std::cos(half)) * luminance(pi_i));
+        break;
+      }
       case Light::Kind::kDirectional:
         m_lights.push_back({Kind::kDirectional, index, 0.f, pi_i});
         power.push_back(kPi * radius * radius * luminance(pi_i));
@@ -161,6 +169,7 @@ std::optional<LightSample> LightSampler::sample(Vec3 p, float u_choice, Sample2 
       if (!(ls.distance > 0.f)) return std::nullopt;
       ls.wi = to / ls.distance;
       ls.li = light.falloff ? e.radiance / (ls.distance * ls.distance) : e.radiance;
+      if (light.kind == Light::Kind::kSpot) ls.li = ls.li * spot_factor(light, -ls.wi);
       ls.pdf = choice;
       ls.delta = true;
       return ls;

@@ -45,7 +45,8 @@ struct LightShapeHit {
 /// Conventions (docs/rendering.md):
 ///  - emissive geometry emits `emission * emission_strength` on the side its normal points to
 ///    (a triangle's by its winding, a sphere's outward);
-///  - a point light of intensity I gives irradiance pi I cos / d^2 (pi I cos when it does not
+///  - a point light (a spot light within its cone) of intensity I gives irradiance pi I cos / d^2 (pi I cos when it
+///  does not
 ///    fall off, as NFF lights do), a directional light pi I cos: a diffuse surface of albedo
 ///    rho then shows rho I cos, Whitted's value;
 ///  - a sphere or quad light that names no object of its own is an emitting shape of radiance
