@@ -28,10 +28,9 @@ std::shared_ptr<const EnvironmentImage> sky_image() {
   image->height = kHeight;
   image->texels.resize(static_cast<std::size_t>(kWidth) * kHeight);
   for (int j = 0; j < kHeight; ++j) {
-    const float theta = kPi * (static_cast<float>(j) + 0.5f) / kHeight;
     for (int i = 0; i < kWidth; ++i) {
-      const float phi = 2.f * kPi * ((static_cast<float>(i) + 0.5f) / kWidth - 0.5f);
-      const Vec3 d{std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
+      const Vec3 d =
+          lat_long_direction((static_cast<float>(i) + 0.5f) / kWidth, (static_cast<float>(j) + 0.5f) / kHeight);
       Color c;
       if (d.y > 0.f) {
         const float t = std::pow(1.f - d.y, 4.f);

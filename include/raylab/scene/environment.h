@@ -28,7 +28,9 @@
 /// and v in [j / height, (j + 1) / height), and the environment reads the texel that holds a
 /// direction's (u, v) (nearest, no filtering; u = 1 reads the last column).
 
+#include <cmath>
 #include <memory>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -62,5 +64,15 @@ struct Environment {
   /// positive scale. False for the default, a scene that sets no environment.
   bool present() const { return scale > 0.f && (image != nullptr || max_component(color) > 0.f); }
 };
+
+/// The unit direction of lat-long image coordinates (u, v) in the environment's own frame, by
+/// the convention above: the one rule for turning a texel into a direction, whoever draws or
+/// reads an image.
+inline Vec3 lat_long_direction(float u, float v) {
+  const float phi = std::numbers::pi_v<float> * (2.f * u - 1.f);
+  const float theta = std::numbers::pi_v<float> * v;
+  const float sin_theta = std::sin(theta);
+  return {sin_theta * std::cos(phi), std::cos(theta), sin_theta * std::sin(phi)};
+}
 
 }  // namespace raylab

@@ -42,14 +42,6 @@ Sample2 lat_long_uv(Vec3 d) {
   return {0.5f + phi * (0.5f * std::numbers::inv_pi_v<float>), theta * std::numbers::inv_pi_v<float>};
 }
 
-// The direction of (u, v): the inverse of lat_long_uv, a unit vector.
-Vec3 lat_long_direction(Sample2 uv) {
-  const float phi = kPi * (2.f * uv.x - 1.f);
-  const float theta = kPi * uv.y;
-  const float sin_theta = std::sin(theta);
-  return {sin_theta * std::cos(phi), std::cos(theta), sin_theta * std::sin(phi)};
-}
-
 // Uniform over the unit sphere: height y uniform in [-1, 1] (Archimedes' hat-box theorem).
 Vec3 uniform_sphere(Sample2 u) {
   const float y = 1.f - 2.f * u.y;
@@ -140,7 +132,8 @@ float EnvironmentLight::pdf(Vec3 world_dir) const {
 
 std::optional<EnvironmentLight::Sample> EnvironmentLight::sample(Sample2 u) const {
   if (!m_distribution) return Sample{uniform_sphere(u), m_color, kInvFourPi};
-  const Vec3 wi = to_world(lat_long_direction(m_distribution->sample(u).point));
+  const Sample2 uv = m_distribution->sample(u).point;
+  const Vec3 wi = to_world(lat_long_direction(uv.x, uv.y));
   // The density and radiance are read back from wi rather than from the sampled cell: the trip
   // through sin and cos can move a point on a texel's edge into its neighbour, and then wi is
   // the neighbour's direction. Reading both from wi keeps them equal to pdf(wi) and

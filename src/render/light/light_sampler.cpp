@@ -34,8 +34,9 @@ Environment background_environment(const RenderSettings& s) {
   image->height = kSkyHeight;
   image->texels.resize(static_cast<std::size_t>(kSkyWidth) * kSkyHeight);
   for (int y = 0; y < kSkyHeight; ++y) {
-    const float theta = kPi * (static_cast<float>(y) + 0.5f) / kSkyHeight;
-    const Color c = WhittedIntegrator::background(s, Vec3{0.f, std::cos(theta), std::sin(theta)});
+    // The gradient depends on the height alone: one direction per row.
+    const Color c =
+        WhittedIntegrator::background(s, lat_long_direction(0.5f, (static_cast<float>(y) + 0.5f) / kSkyHeight));
     for (int x = 0; x < kSkyWidth; ++x) image->texels[static_cast<std::size_t>(y) * kSkyWidth + x] = c;
   }
   env.image = std::move(image);
