@@ -269,7 +269,11 @@ class SceneReader {
   // The objects that sphere and quad lights name as their visible surface ("object"), once the
   // objects are read: the path integrator lights the scene from the object and skips the light.
   void resolve_light_objects() {
-    for (const auto& [light, node, name] : m_light_objects) {
+    for (const auto& entry : m_light_objects) {
+      // Named variables, not a structured binding: clang 14 cannot capture a binding in a lambda.
+      const std::size_t light = std::get<0>(entry);
+      const Node& node = std::get<1>(entry);
+      const std::string& name = std::get<2>(entry);
       const auto& objects = m_scene.objects;
       const auto it =
           std::find_if(objects.begin(), objects.end(), [&](const SceneObject& o) { return o.name == name; });
