@@ -87,6 +87,30 @@ SurfaceInteraction surface_at(const Geometry& geometry, const Ray& ray, const Hi
   return si;
 }
 
+std::optional<SurfaceTangents> surface_tangents(const Geometry& geometry, std::uint32_t prim_id) {
+  const ShapeRef ref = geometry.resolve(prim_id);
+  if (ref.kind == ShapeKind::kQuad) {
+    // surface_at measures a quad's coordinates in scene units along its edges.
+    const Quad& q = geometry.quads[ref.index];
+    const float lu = length(q.edge_u), lv = length(q.edge_v);
+    if (!(lu > 0.f) || !(lv > 0.f)) return std::nullopt;
+    return SurfaceTangents{q.edge_u / lu, q.edge_v / lv};
+  }
+  if (ref.kind != ShapeKind::kTriangle) return std::nullopt;
+  const Triangle& tri = geometry.triangles[ref.index];
+  const Vec3 e1 = tri.p1 - tri.p0, e2 = tri.p2 - tri.p0;
+  // Without texture coordinates a triangle's are its barycentrics: (0,0), (1,0), (0,1).
+  if (geometry.triangle_uvs.empty()) return SurfaceTangents{e1, e2};
+  // e1 = du1 dp/du + dv1 dp/dv and e2 likewise: solve the 2x2 system for the two tangents.
+  const auto& uv = geometry.triangle_uvs[ref.index];
+  const float du1 = uv[1].x - uv[0].x, dv1 = uv[1].y - uv[0].y;
+  const float du2 = uv[2].x - uv[0].x, dv2 = uv[2].y - uv[0].y;
+  const float det = du1 * dv2 - du2 * dv1;
+  if (!(std::fabs(det) > 1e-12f) || !std::isfinite(det)) return std::nullopt;
+  const float inv = 1.f / det;
+  return SurfaceTangents{(e1 * dv2 - e2 * dv1) * inv, (e2 * du1 - e1 * du2) * inv};
+}
+
 float surface_offset(Vec3 position) { return 1e-4f * std::max(1.f, max_component(abs(position))); }
 
 Vec3 offset_origin(Vec3 p, Vec3 n, Vec3 dir) {

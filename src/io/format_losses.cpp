@@ -84,6 +84,18 @@ void add_texture_losses(std::vector<std::string>& out, const Scene& scene, bool 
   const std::size_t checkers =
       checker_kept ? 0 : count_if(ms, [](const Material& m) { return m.texture.kind == Texture::Kind::kChecker; });
   add_if(out, images, count(images, "image texture"));
+  // The maps (normal, bump, emission, metallic-roughness, transmission): only a scene file
+  // carries them, as PNGs beside it, where 8 bits give their texels back.
+  const std::size_t mapped = count_if(ms, [&](const Material& m) {
+    const MaterialMaps& p = m.maps;
+    const auto lost = [&](const std::shared_ptr<const TextureImage>& image, TextureEncoding encoding) {
+      return image != nullptr && (!scene_file || !encode_texture_png(*image, encoding));
+    };
+    constexpr TextureEncoding kLinear = TextureEncoding::kLinear;
+    return lost(p.metallic_roughness, kLinear) || lost(p.emission, TextureEncoding::kSrgb) ||
+           lost(p.transmission, kLinear) || lost(p.normal, kLinear) || lost(p.bump, kLinear);
+  });
+  add_if(out, mapped, "texture maps beyond the colour of " + count(mapped, "material"));
   add_if(out, plates, count(plates, "zone-plate texture"));
   add_if(out, checkers, count(checkers, "checker texture"));
 }

@@ -21,6 +21,7 @@
 #include "raylab/io/read_file.h"
 #include "raylab/io/scene_paths.h"
 #include "raylab/io/texture_io.h"
+#include "raylab/scene/normal_maps.h"
 
 namespace raylab {
 namespace {
@@ -428,20 +429,50 @@ class ObjMaterials {
     // illum 3 to 7 are the models with ray-traced reflection; Ks is their mirror colour.
     if (m.illum >= 3 && m.illum <= 7) out.reflectivity = out.ks;
     if (textured) out.texture = Texture::from_image(image);
+    add_maps(m, block, out);
     return out;
   }
 
+  // The maps beyond the colour: map_Ke, norm, and map_Bump (also written map_bump or bump),
+  // which exporters use for height maps (its meaning in the MTL specification) and for normal
+  // maps alike (Blender's does): an image that looks like a normal map is read as one.
+  void add_maps(const tinyobj::material_t& m, const MtlBlock* block, Material& out) {
+    if (!m.emissive_texname.empty())
+      out.maps.emission = texture(m, block, m.emissive_texname, {"map_Ke"}, TextureEncoding::kSrgb);
+    if (!m.normal_texname.empty())
+      out.maps.normal = texture(m, block, m.normal_texname, {"norm"}, TextureEncoding::kLinear);
+    if (!m.bump_texname.empty() && !out.maps.normal) {
+      auto image = texture(m, block, m.bump_texname, {"map_Bump", "map_bump", "bump"}, TextureEncoding::kLinear);
+      if (image && looks_like_normal_map(*image)) {
+        out.maps.normal = std::move(image);
+      } else {
+        out.maps.bump = std::move(image);
+        out.maps.bump_scale = std::isfinite(m.bump_texopt.bump_multiplier) ? m.bump_texopt.bump_multiplier : 1.f;
+      }
+    }
+  }
+
+  // The diffuse texture (map_Kd).
   std::shared_ptr<const TextureImage> texture(const tinyobj::material_t& m, const MtlBlock* block) {
-    const MtlStatement* s = statement(block, "map_Kd");
+    return texture(m, block, m.diffuse_texname, {"map_Kd"}, TextureEncoding::kSrgb);
+  }
+
+  // The image `name` that statement `keywords` (its spellings) of material `m` refers to, decoded
+  // with `encoding`, or nullptr (with a warning) when the file is missing.
+  std::shared_ptr<const TextureImage> texture(const tinyobj::material_t& m, const MtlBlock* block,
+                                              const std::string& name, std::initializer_list<std::string_view> keywords,
+                                              TextureEncoding encoding) {
+    const MtlStatement* s = nullptr;
+    for (const std::string_view k : keywords) s = s != nullptr ? s : statement(block, k);
     const std::string in = s != nullptr ? block->file : m_obj_path;
     const Location at = s != nullptr ? Location{s->at.line, s->last_word_col} : Location{};
     const std::string path =
-        resolve_reference(m.diffuse_texname, in, at, "texture", "; material '" + m.name + "' renders without it");
+        resolve_reference(name, in, at, "texture", "; material '" + m.name + "' renders without it");
     if (path.empty()) return nullptr;
-    const std::string key = canonical_key(path);
+    const std::string key = canonical_key(path) + (encoding == TextureEncoding::kLinear ? "\n(linear)" : "");
     if (const auto it = m_textures.find(key); it != m_textures.end()) return it->second;
     try {
-      return m_textures[key] = load_texture(path);
+      return m_textures[key] = load_texture(path, encoding);
     } catch (const InputError& e) {
       throw InputError(in, at.line, at.col, e.what());
     }

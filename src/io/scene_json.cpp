@@ -117,7 +117,7 @@ class SceneReader {
       const Node m = n.child(item.key(), "material '" + item.key() + "'");
       m.check_keys({"type", "color", "kd", "ks", "shininess", "reflectivity", "transmittance", "ior", "emission",
                     "emission_strength", "fresnel", "texture", "roughness", "metal", "eta", "k", "metallic",
-                    "transmission"});
+                    "transmission", "maps"});
       Material mat;
       mat.name = item.key();
       read_material_model(m, mat);
@@ -131,6 +131,7 @@ class SceneReader {
       mat.emission = m.color("emission", mat.emission);
       mat.fresnel = m.boolean("fresnel", mat.fresnel);
       if (m.has("texture")) read_texture(m.child("texture", "texture of material '" + item.key() + "'"), mat);
+      if (m.has("maps")) read_maps(m.child("maps", "maps of material '" + item.key() + "'"), mat.maps);
       m_materials[item.key()] = m_scene.add_material(mat);
     }
   }
@@ -202,6 +203,35 @@ class SceneReader {
     mat.texture.kind = Texture::Kind::kChecker;
     mat.texture.color2 = t.color("color2", mat.texture.color2);
     mat.texture.scale = t.real("scale", mat.texture.scale, kPositive);
+  }
+
+  // The maps beyond the colour (docs/scene-format.md): each {"file": ...}, the normal and bump
+  // maps with an optional "scale".
+  void read_maps(const Node& n, MaterialMaps& maps) {
+    if (!n.value().is_object()) n.fail("'maps' must be an object");
+    n.check_keys({"metallic_roughness", "emission", "transmission", "normal", "bump"});
+    const auto image = [&](const char* key, TextureEncoding encoding, float* scale) {
+      const Node t = n.child(key, std::string(key) + " map");
+      if (!t.value().is_object()) t.fail("a map must be an object with a 'file'");
+      t.check_keys(scale != nullptr ? std::initializer_list<std::string_view>{"file", "scale"}
+                                    : std::initializer_list<std::string_view>{"file"});
+      if (scale != nullptr) *scale = static_cast<float>(t.real("scale", *scale));
+      const std::string reference = t.string("file");
+      const std::string path = resolve_scene_path(m_base_dir, reference, m_options.allow_outside_paths);
+      if (path.empty()) t.fail_at("file", outside_message(reference));
+      try {
+        return load_texture(path, encoding);
+      } catch (const InputError&) {
+        check_exists(t, reference, path, "map");
+        throw;
+      }
+    };
+    constexpr TextureEncoding kSrgb = TextureEncoding::kSrgb, kLinear = TextureEncoding::kLinear;
+    if (n.has("metallic_roughness")) maps.metallic_roughness = image("metallic_roughness", kLinear, nullptr);
+    if (n.has("emission")) maps.emission = image("emission", kSrgb, nullptr);
+    if (n.has("transmission")) maps.transmission = image("transmission", kLinear, nullptr);
+    if (n.has("normal")) maps.normal = image("normal", kLinear, &maps.normal_scale);
+    if (n.has("bump")) maps.bump = image("bump", kLinear, &maps.bump_scale);
   }
 
   // Fails at `n`'s "file" when `path` is not a file: a missing file is a mistake in the scene

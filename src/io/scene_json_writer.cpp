@@ -131,16 +131,47 @@ using TextureFiles = std::map<const TextureImage*, std::string>;
 
 TextureFiles texture_files(const Scene& scene, const std::string& stem, std::vector<SidecarFile>& files) {
   TextureFiles names;
-  for (const Material& m : scene.materials) {
-    const TextureImage* image = m.texture.kind == Texture::Kind::kImage ? m.texture.image.get() : nullptr;
-    if (image == nullptr || names.count(image) > 0) continue;
-    const std::optional<std::vector<unsigned char>> png = encode_texture_png(*image);
-    if (!png) continue;
+  const auto add = [&](const TextureImage* image, TextureEncoding encoding) {
+    if (image == nullptr || names.count(image) > 0) return;
+    const std::optional<std::vector<unsigned char>> png = encode_texture_png(*image, encoding);
+    if (!png) return;
     SidecarFile file{stem + ".tex" + std::to_string(files.size()) + ".png", std::string(png->begin(), png->end())};
     names[image] = file.name;
     files.push_back(std::move(file));
+  };
+  for (const Material& m : scene.materials) {
+    if (m.texture.kind == Texture::Kind::kImage) add(m.texture.image.get(), TextureEncoding::kSrgb);
+    add(m.maps.emission.get(), TextureEncoding::kSrgb);
+    for (const auto* data : {&m.maps.metallic_roughness, &m.maps.transmission, &m.maps.normal, &m.maps.bump})
+      add(data->get(), TextureEncoding::kLinear);
   }
   return names;
+}
+
+// The material's maps that have a file, as "maps": {...}; nothing when none has.
+void material_maps(JsonText& j, const MaterialMaps& maps, const TextureFiles& textures) {
+  const auto file_of = [&](const std::shared_ptr<const TextureImage>& image) -> const std::string* {
+    const auto it = image ? textures.find(image.get()) : textures.end();
+    return it == textures.end() ? nullptr : &it->second;
+  };
+  const std::pair<const char*, const std::shared_ptr<const TextureImage>*> entries[] = {
+      {"metallic_roughness", &maps.metallic_roughness},
+      {"emission", &maps.emission},
+      {"transmission", &maps.transmission},
+      {"normal", &maps.normal},
+      {"bump", &maps.bump}};
+  bool open = false;
+  for (const auto& [key, image] : entries) {
+    const std::string* file = file_of(*image);
+    if (file == nullptr) continue;
+    if (!open) j.key("maps").open('{');
+    open = true;
+    j.key(key).open('{').key("file").string(*file);
+    if (image == &maps.normal) j.key("scale").number(maps.normal_scale);
+    if (image == &maps.bump) j.key("scale").number(maps.bump_scale);
+    j.close('}');
+  }
+  if (open) j.close('}');
 }
 
 void materials(JsonText& j, const Scene& scene, const std::vector<std::string>& names, const TextureFiles& textures) {
@@ -162,6 +193,7 @@ void materials(JsonText& j, const Scene& scene, const std::vector<std::string>& 
                m.texture.kind == Texture::Kind::kImage && it != textures.end()) {
       j.key("texture").open('{').key("type").string("image").key("file").string(it->second).close('}');
     }
+    material_maps(j, m.maps, textures);
     j.close('}');
   }
   j.close('}');

@@ -147,7 +147,7 @@ std::vector<Color> decode_rgb(std::span<const unsigned char> bytes, ImageSize si
 }  // namespace
 
 std::shared_ptr<const TextureImage> decode_texture(std::span<const unsigned char> bytes, const std::string& file,
-                                                   const std::string& element) {
+                                                   const std::string& element, TextureEncoding encoding) {
   const std::optional<ImageFormat> format = sniff_format(bytes);
   if (!format) fail(file, element, "not a PNG or JPEG image (textures must be one of the two)");
   if (bytes.size() > static_cast<std::size_t>(INT_MAX)) fail(file, element, "image file is larger than 2 GiB");
@@ -155,32 +155,45 @@ std::shared_ptr<const TextureImage> decode_texture(std::span<const unsigned char
   const bool sixteen_bit =
       *format == ImageFormat::kPng && stbi_is_16_bit_from_memory(bytes.data(), static_cast<int>(bytes.size())) != 0;
   // 16-bit PNGs keep their precision: decoding them to 8 bits first would band smooth gradients.
-  std::vector<Color> texels =
-      sixteen_bit ? decode_rgb(bytes, size, file, element, stbi_load_16_from_memory,
-                               [](stbi_us v) { return srgb_to_linear(static_cast<float>(v) / 65535.f); })
-                  : decode_rgb(bytes, size, file, element, stbi_load_from_memory,
-                               [&table = srgb8_to_linear_table()](stbi_uc v) { return table[v]; });
+  const bool srgb = encoding == TextureEncoding::kSrgb;
+  std::vector<Color> texels = sixteen_bit ? decode_rgb(bytes, size, file, element, stbi_load_16_from_memory,
+                                                       [srgb](stbi_us v) {
+                                                         const float s = static_cast<float>(v) / 65535.f;
+                                                         return srgb ? srgb_to_linear(s) : s;
+                                                       })
+                                          : decode_rgb(bytes, size, file, element, stbi_load_from_memory,
+                                                       [srgb, &table = srgb8_to_linear_table()](stbi_uc v) {
+                                                         return srgb ? table[v] : static_cast<float>(v) / 255.f;
+                                                       });
   return std::make_shared<const TextureImage>(static_cast<int>(size.width), static_cast<int>(size.height),
                                               std::move(texels));
 }
 
-std::shared_ptr<const TextureImage> load_texture(const std::string& path) {
+std::shared_ptr<const TextureImage> load_texture(const std::string& path, TextureEncoding encoding) {
   const std::string bytes = read_file(path);
-  return decode_texture(std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()), path);
+  return decode_texture(std::span(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()), path, "",
+                        encoding);
 }
 
-std::optional<std::vector<unsigned char>> encode_texture_png(const TextureImage& image) {
+std::optional<std::vector<unsigned char>> encode_texture_png(const TextureImage& image, TextureEncoding encoding) {
+  // The PNG writer stores linear_to_srgb(value) in 8 bits, and stores code c exactly when given
+  // table[c]: the film holds table[code] for the code each texel needs in its encoding.
   const std::array<float, 256>& table = srgb8_to_linear_table();
+  const bool srgb = encoding == TextureEncoding::kSrgb;
   Film film(image.width(), image.height());
   for (int y = 0; y < image.height(); ++y) {
     for (int x = 0; x < image.width(); ++x) {
       const Color c = image.texel(x, y);
+      Color stored;
       for (int k = 0; k < 3; ++k) {
-        // The 8-bit value the PNG writer will store must decode to this very float.
-        const long code = std::lround(linear_to_srgb(c[k]) * 255.f);
-        if (code < 0 || code > 255 || table[static_cast<std::size_t>(code)] != c[k]) return std::nullopt;
+        // The 8-bit value stored must decode to this very float.
+        const long code = std::lround((srgb ? linear_to_srgb(c[k]) : c[k]) * 255.f);
+        if (code < 0 || code > 255) return std::nullopt;
+        const float decoded = srgb ? table[static_cast<std::size_t>(code)] : static_cast<float>(code) / 255.f;
+        if (decoded != c[k]) return std::nullopt;
+        stored[k] = table[static_cast<std::size_t>(code)];
       }
-      film.at(x, y) = c;
+      film.at(x, y) = stored;
     }
   }
   return encode_image(film, ".png");

@@ -39,8 +39,9 @@ Bsdf phong_bsdf(const Material& m, Color base) {
 
 }  // namespace
 
-Bsdf material_bsdf(const Material& m, Color base, float u_mix) {
-  const float alpha = alpha_of(m.roughness);
+Bsdf material_bsdf(const Material& m, const MaterialPoint& at, float u_mix) {
+  const Color base = at.base;
+  const float alpha = alpha_of(at.roughness);
   switch (m.model) {
     case MaterialModel::kPhong:
       return phong_bsdf(m, base);
@@ -55,10 +56,10 @@ Bsdf material_bsdf(const Material& m, Color base, float u_mix) {
     case MaterialModel::kMetallicRoughness: {
       // glTF 2.0's model: a metal of reflectance `base` with probability `metallic`, else a
       // dielectric: transmitting with probability `transmission`, else a coated diffuse base.
-      if (u_mix < m.metallic) return Bsdf::conductor(ior_for_reflectance(base), alpha);
-      const float rest = (u_mix - m.metallic) / std::max(1.f - m.metallic, 1e-6f);
+      if (u_mix < at.metallic) return Bsdf::conductor(ior_for_reflectance(base), alpha);
+      const float rest = (u_mix - at.metallic) / std::max(1.f - at.metallic, 1e-6f);
       const float ior = std::max(m.ior, 1.0001f);
-      if (rest < m.transmission) return Bsdf::dielectric(ior, alpha, base);
+      if (rest < at.transmission) return Bsdf::dielectric(ior, alpha, base);
       return Bsdf::plastic(base, ior, alpha);
     }
   }

@@ -7,9 +7,9 @@
 
 namespace raylab::detail {
 
-/// The BSDF of material `m` at a point whose base colour (texture applied) is `base`. A material
+/// The BSDF of material `m` at a point where its textured parameters are `at`. A material
 /// that mixes two models (glTF's fractional metallic or transmission) picks one with `u_mix`, in
 /// proportion to its weight: the one-sample estimate of the mixture.
-Bsdf material_bsdf(const Material& m, Color base, float u_mix);
+Bsdf material_bsdf(const Material& m, const MaterialPoint& at, float u_mix);
 
 }  // namespace raylab::detail

@@ -119,8 +119,8 @@ Color PathIntegrator::radiance(const TraceContext& ctx, const Ray& camera_ray, S
 
     // Light emitted by the surface found: emitters emit on the side their normal points to.
     const Color emitted = !si.front_face                        ? Color{0.f}
-                          : hit.prim_id < scene.geometry.size() ? m_lights.emitted(hit.prim_id)
-                                                                : material.emission * material.emission_strength;
+                          : hit.prim_id < scene.geometry.size() ? m_lights.emitted(hit.prim_id, si.u, si.v)
+                                                                : emitted_radiance(material, si.u, si.v);
     if (emitted.x > 0.f || emitted.y > 0.f || emitted.z > 0.f) {
       const float light_pdf =
           previous_delta ? 0.f : m_lights.emitter_pdf(previous_position, hit.prim_id, si.position, si.geometric_normal);
@@ -132,10 +132,10 @@ Color PathIntegrator::radiance(const TraceContext& ctx, const Ray& camera_ray, S
     const Sample2 u_light = samples.next_2d();
     const Sample2 u_bsdf = samples.next_2d();
 
-    const Color base = diffuse_color(material, si.u, si.v);
+    const MaterialPoint at = material_at(material, si.u, si.v);
     const Bsdf bsdf = material.model == MaterialModel::kMetallicRoughness
-                          ? material_bsdf(material, base, samples.rng().next_float())
-                          : material_bsdf(material, base, 0.f);
+                          ? material_bsdf(material, at, samples.rng().next_float())
+                          : material_bsdf(material, at, 0.f);
     // Reflectors are shaded on the side the ray arrived from (the shading normal faces it); a
     // dielectric needs its outside as +z, so that a ray inside sees wo.z < 0 and the inverse index.
     const bool outward = bsdf.model() == Bsdf::Model::kDielectric && !si.front_face;

@@ -73,4 +73,24 @@ Color diffuse_color(const Material& m, float u, float v) {
   return m.color;
 }
 
+MaterialPoint material_at(const Material& m, float u, float v) {
+  MaterialPoint p;
+  p.base = diffuse_color(m, u, v);
+  p.roughness = m.roughness;
+  p.metallic = m.metallic;
+  p.transmission = m.transmission;
+  if (m.maps.metallic_roughness) {
+    const Color mr = m.maps.metallic_roughness->sample(u, v);
+    p.roughness *= mr.y;
+    p.metallic *= mr.z;
+  }
+  if (m.maps.transmission) p.transmission *= m.maps.transmission->sample(u, v).x;
+  return p;
+}
+
+Color emitted_radiance(const Material& m, float u, float v) {
+  const Color e = m.emission * m.emission_strength;
+  return m.maps.emission ? e * m.maps.emission->sample(u, v) : e;
+}
+
 }  // namespace raylab

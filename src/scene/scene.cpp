@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "raylab/core/error.h"
+#include "raylab/scene/normal_maps.h"
 #include "raylab/scene/scene_memory.h"
 
 namespace raylab {
@@ -73,7 +74,15 @@ std::uint32_t Scene::object_of(std::uint32_t prim_id) const {
 }
 
 SurfaceInteraction surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
-  if (hit.prim_id < scene.geometry.size()) return surface_at(scene.geometry, ray, hit);
+  if (hit.prim_id < scene.geometry.size()) {
+    SurfaceInteraction si = surface_at(scene.geometry, ray, hit);
+    const MaterialMaps& maps = scene.materials[scene.objects[si.object_id].material].maps;
+    if (maps.changes_normal()) {
+      if (const std::optional<SurfaceTangents> tangents = surface_tangents(scene.geometry, hit.prim_id))
+        apply_normal_maps(maps, *tangents, si);
+    }
+    return si;
+  }
   const Instance& inst = instance_of(scene, hit.prim_id);
   // The same parameter t names the same point in both spaces: the direction is mapped without
   // normalising it.
@@ -87,6 +96,13 @@ SurfaceInteraction surface_at(const Scene& scene, const Ray& ray, const Hit& hit
   si.geometric_normal = normalize(inst.to_world.normal(si.geometric_normal));
   si.shading_normal = normalize(inst.to_world.normal(si.shading_normal));
   si.object_id += inst.first_object;
+  const MaterialMaps& maps = scene.materials[scene.objects[si.object_id].material].maps;
+  if (maps.changes_normal()) {
+    if (const std::optional<SurfaceTangents> local =
+            surface_tangents(scene.prototypes[inst.prototype], local_hit.prim_id)) {
+      apply_normal_maps(maps, {inst.to_world.vector(local->dpdu), inst.to_world.vector(local->dpdv)}, si);
+    }
+  }
   return si;
 }
 

@@ -1,6 +1,8 @@
 #include "raylab/scene/scene_fingerprint.h"
 
+#include <algorithm>
 #include <bit>
+#include <iterator>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -59,6 +61,14 @@ void hash_geometry(Hasher& h, const Geometry& g) {
   h.number(static_cast<std::uint64_t>(g.groups.size()));  // scenes hold none; structures make them
 }
 
+void hash_image(Hasher& h, const TextureImage& image) {
+  h.number(image.width());
+  h.number(image.height());
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x) h.vec(image.texel(x, y));
+  }
+}
+
 void hash_material(Hasher& h, const Material& m) {
   h.text(m.name);
   h.vec(m.color);
@@ -70,13 +80,7 @@ void hash_material(Hasher& h, const Material& m) {
   h.vec(t.color2);
   for (float f : {t.scale, t.zone_center.x, t.zone_center.y, t.zone_k, t.zone_radius}) h.number(f);
   h.number(t.image != nullptr);
-  if (t.image) {
-    h.number(t.image->width());
-    h.number(t.image->height());
-    for (int y = 0; y < t.image->height(); ++y) {
-      for (int x = 0; x < t.image->width(); ++x) h.vec(t.image->texel(x, y));
-    }
-  }
+  if (t.image) hash_image(h, *t.image);
   // The physically based members only where they differ from the defaults, so that the
   // fingerprints of scenes from before they existed (and their checkpoints) stay valid.
   const Material plain;
@@ -87,6 +91,19 @@ void hash_material(Hasher& h, const Material& m) {
     for (float f : {m.roughness, m.metallic, m.transmission, m.emission_strength}) h.number(f);
     h.vec(m.conductor_eta);
     h.vec(m.conductor_k);
+  }
+  // The maps likewise: only a material that has one hashes them.
+  const MaterialMaps& maps = m.maps;
+  const std::shared_ptr<const TextureImage>* images[] = {&maps.metallic_roughness, &maps.emission, &maps.transmission,
+                                                         &maps.normal, &maps.bump};
+  if (std::any_of(std::begin(images), std::end(images), [](const auto* p) { return *p != nullptr; })) {
+    h.word(0x4D4150534D415053ull);  // "MAPSMAPS"
+    for (const auto* image : images) {
+      h.number(*image != nullptr);
+      if (*image) hash_image(h, **image);
+    }
+    h.number(maps.normal_scale);
+    h.number(maps.bump_scale);
   }
 }
 

@@ -46,9 +46,12 @@ SceneMemory scene_memory(const Scene& scene) {
   std::set<const TextureImage*> images;
   for (const Material& mat : scene.materials) {
     m.materials += heap_bytes(mat.name);
-    const TextureImage* image = mat.texture.image.get();
-    if (image != nullptr && images.insert(image).second) {
-      m.textures += sizeof(TextureImage) + static_cast<std::size_t>(image->width()) * image->height() * sizeof(Color);
+    const MaterialMaps& maps = mat.maps;
+    for (const TextureImage* image : {mat.texture.image.get(), maps.metallic_roughness.get(), maps.emission.get(),
+                                      maps.transmission.get(), maps.normal.get(), maps.bump.get()}) {
+      if (image != nullptr && images.insert(image).second) {
+        m.textures += sizeof(TextureImage) + static_cast<std::size_t>(image->width()) * image->height() * sizeof(Color);
+      }
     }
   }
   count(scene.lights, m.lights, m.reserved);

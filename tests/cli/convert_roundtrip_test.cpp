@@ -107,7 +107,7 @@ TEST_F(ConvertCli, SceneFileKeepsShadingNormalsAndWritesOneSidecarPerRunOfTriang
 // Every shipped scene, the textured one included (its image goes to a PNG beside the scene
 // file), converts to a scene file that renders the same image, with no warning.
 TEST_F(ConvertCli, ShippedScenesConvertToSceneFilesThatRenderTheSameImage) {
-  for (const std::string name : {"shapes", "instances", "textured", "whitted", "orbit"}) {
+  for (const std::string name : {"shapes", "instances", "textured", "whitted", "orbit", "maps"}) {
     SCOPED_TRACE(name);
     const std::string source = raylab::test::source_dir() + "/scenes/" + name + ".json";
     EXPECT_EQ(convert(source, name + ".json"), "");
@@ -116,6 +116,11 @@ TEST_F(ConvertCli, ShippedScenesConvertToSceneFilesThatRenderTheSameImage) {
   EXPECT_TRUE(fs::exists(out() / "textured.tex0.png"));
   EXPECT_NE(read_text(out() / "textured.json").find(R"("texture": {"type": "image", "file": "textured.tex0.png"})"),
             std::string::npos);
+  // The maps go beside the scene file too, as linear data where they are data.
+  const std::string maps = read_text(out() / "maps.json");
+  EXPECT_NE(maps.find(R"("normal": {"file": "maps.tex)"), std::string::npos) << maps;
+  EXPECT_NE(maps.find(R"("bump": {"file": "maps.tex)"), std::string::npos) << maps;
+  EXPECT_TRUE(fs::exists(out() / "maps.tex1.png"));
 }
 
 TEST_F(ConvertCli, ObjOutputWritesItsMtlAndReadsBackWithTheSameMaterials) {

@@ -217,6 +217,13 @@ TEST(SceneJson, MistakesAreReportedWithLineColumnAndValidChoices) {
        "s.json:1:33:", "unsupported format '.~obj'"},
       {R"({"version": 1, "objects": [{"type": "mesh", "file": "t.xyz"}]})",
        "s.json:1:45:", "unsupported format '.xyz'"},
+      // Material maps: an unknown map, a key a map does not take, a missing file.
+      {R"({"version": 1, "materials": {"m": {"maps": {"height": {"file": "h.png"}}}}, "objects": []})",
+       "s.json:1:45:", "unknown key 'height' in maps of material 'm' (valid: metallic_roughness, emission,"},
+      {R"({"version": 1, "materials": {"m": {"maps": {"emission": {"file": "e.png", "scale": 2}}}}, "objects": []})",
+       "s.json:1:75:", "unknown key 'scale' in emission map (valid: file)"},
+      {R"({"version": 1, "materials": {"m": {"maps": {"normal": {"file": "n.png"}}}}, "objects": []})",
+       "s.json:1:56:", "map file 'n.png' not found"},
   };
   expect_refused(cases);
 }

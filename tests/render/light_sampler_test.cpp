@@ -5,11 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "../../src/render/light/light_sampler.h"
 #include "raylab/accel/factory.h"
@@ -119,6 +122,56 @@ TEST(LightSamplerChi2, RejectsADensityThatIsSlightlyWrong) {
     g.add(Quad{{-1.f, -0.5f, 0.6f}, {0.f, 2.2f, 0.f}, {1.5f, 0.f, 0.2f}}, o);
   });
   EXPECT_LT(light_sampling_p_value(quad, wider, 200000, 5), 1e-6);
+}
+
+// An emission map: a light sample's radiance is the map at the point sampled, the same as a ray
+// that hits that point sees (LightSampler::emitted at its surface coordinates), for triangles
+// with texture coordinates, quads, disks and spheres. A 2 x 2 map of distinct texels with
+// bilinear blending makes any mix-up of the two coordinates show.
+TEST(LightSamplerEmissionMap, SampledRadianceIsWhatARayToThePointSees) {
+  const auto map = std::make_shared<const TextureImage>(
+      2, 2, std::vector<Color>{{1.f, 0.f, 0.f}, {0.f, 1.f, 0.f}, {0.f, 0.f, 1.f}, {1.f, 1.f, 1.f}});
+  Scene s;
+  Material lamp;
+  lamp.emission = {2.f, 2.f, 2.f};
+  lamp.emission_strength = 1.5f;
+  lamp.maps.emission = map;
+  const std::uint32_t object = s.add_object("lamp", s.add_material(lamp));
+  const std::array<Vec2, 3> uvs{Vec2{0.1f, 0.1f}, Vec2{0.9f, 0.3f}, Vec2{0.3f, 0.8f}};
+  s.geometry.add(Triangle{{-1.f, -1.f, 2.f}, {0.f, 1.f, 2.f}, {1.f, -1.f, 2.f}}, nullptr, &uvs, object);
+  s.geometry.add(Quad{{-3.f, -1.f, 1.f}, {0.f, 2.f, 0.f}, {1.f, 0.f, 0.3f}}, object);
+  s.geometry.add(Disk{{2.5f, 0.f, 1.5f}, normalize(Vec3{-0.3f, 0.f, -1.f}), 0.8f}, object);
+  s.geometry.add(Sphere{{0.f, 3.f, 2.f}, 0.7f}, object);
+  const LightSampler lights(s);
+  const std::unique_ptr<Accelerator> accel = make_accelerator("brute", s.geometry);
+  const Vec3 from{0.f, 0.f, -1.f};
+  Pcg32 rng(3);
+  int checked = 0;
+  float least = 1e9f, most = 0.f;
+  for (int i = 0; i < 4000; ++i) {
+    const float u_choice = rng.next_float();
+    const Sample2 u{rng.next_float(), rng.next_float()};
+    const std::optional<detail::LightSample> ls = lights.sample(from, u_choice, u);
+    if (!ls) continue;
+    Ray ray;
+    ray.origin = from;
+    ray.direction = ls->wi;
+    Hit hit;
+    ASSERT_TRUE(accel->intersect(ray, hit));
+    ASSERT_NEAR(hit.t, ls->distance, 1e-3f * ls->distance);  // nothing stands between
+    const SurfaceInteraction si = surface_at(s, ray, hit);
+    const Color seen = lights.emitted(hit.prim_id, si.u, si.v);
+    ASSERT_NEAR(ls->li.x, seen.x, 2e-3f) << "sample " << i << " prim " << hit.prim_id;
+    ASSERT_NEAR(ls->li.y, seen.y, 2e-3f) << "sample " << i << " prim " << hit.prim_id;
+    ASSERT_NEAR(ls->li.z, seen.z, 2e-3f) << "sample " << i << " prim " << hit.prim_id;
+    least = std::min(least, ls->li.x + ls->li.y + ls->li.z);
+    most = std::max(most, ls->li.x + ls->li.y + ls->li.z);
+    ++checked;
+  }
+  EXPECT_GT(checked, 2000);
+  // The map varies the radiance: from 3 (one channel of 2 x 1.5) to 9 (white).
+  EXPECT_LT(least, 4.f);
+  EXPECT_GT(most, 7.f);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 /// Surface data at a hit, computed once the closest hit is known (never during traversal).
 
 #include <cstdint>
+#include <optional>
 
 #include "raylab/core/ray.h"
 #include "raylab/geometry/geometry.h"
@@ -19,6 +20,18 @@ struct SurfaceInteraction {
   bool front_face = true;                ///< true when the ray hit the side the shape's own normal points to
   std::uint32_t object_id = kInvalidId;  ///< object the primitive belongs to
 };
+
+/// How a surface's position changes with its surface coordinates (u, v) of SurfaceInteraction:
+/// the frame in which normal and bump maps are written.
+struct SurfaceTangents {
+  Vec3 dpdu;  ///< dp/du, in scene units per unit of u
+  Vec3 dpdv;  ///< dp/dv, in scene units per unit of v
+};
+
+/// The tangents of primitive `prim_id` (a triangle's or a quad's are constant over it), or
+/// nullopt for the shapes whose surface coordinates are not meant for image maps (spheres,
+/// cylinders, disks) and for triangles whose texture coordinates have no area.
+std::optional<SurfaceTangents> surface_tangents(const Geometry& geometry, std::uint32_t prim_id);
 
 /// Computes position, normals and surface coordinates for `hit` on `ray`.
 SurfaceInteraction surface_at(const Geometry& geometry, const Ray& ray, const Hit& hit);

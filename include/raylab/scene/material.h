@@ -58,6 +58,32 @@ struct Texture {
   std::shared_ptr<const TextureImage> image;
 };
 
+/// Images that vary a material over its surface beyond its colour, each read at the surface
+/// coordinates (u, v) with TextureImage's convention. All are optional. The data maps
+/// (metallic-roughness, transmission, normal, bump) hold linear values, as glTF 2.0 prescribes;
+/// the emission map is a colour. The path integrator reads them all; the Whitted integrator sees
+/// the normal and bump maps (through surface_at's shading normal) and nothing else.
+struct MaterialMaps {
+  /// glTF's metallicRoughnessTexture: green multiplies `roughness`, blue `metallic`.
+  std::shared_ptr<const TextureImage> metallic_roughness;
+  /// Multiplies `emission` (glTF's emissiveTexture, MTL's map_Ke).
+  std::shared_ptr<const TextureImage> emission;
+  /// Red multiplies `transmission` (KHR_materials_transmission's transmissionTexture).
+  std::shared_ptr<const TextureImage> transmission;
+  /// A tangent-space normal map in glTF's (OpenGL's) convention: a texel c gives the normal
+  /// 2c - 1 in the frame (+x along increasing u, +y along increasing v, +z the surface normal).
+  /// glTF's normalTexture, MTL's norm (and a map_Bump that holds normals, docs/rendering.md).
+  std::shared_ptr<const TextureImage> normal;
+  float normal_scale = 1.f;  ///< multiplies the x and y of the normal map (glTF's normalTexture.scale)
+  /// A height map (MTL's map_Bump or bump): its red channel times `bump_scale` is a displacement
+  /// along the normal, in scene units, that tilts the shading normal without moving the surface.
+  std::shared_ptr<const TextureImage> bump;
+  float bump_scale = 1.f;  ///< displacement of a texel value of 1 (MTL's -bm)
+
+  /// True when the normal or bump map changes the shading normal.
+  bool changes_normal() const { return normal != nullptr || bump != nullptr; }
+};
+
 /// The scattering model a material names, as its source gave it. The Whitted integrator shades
 /// every model through the Phong members below; the path integrator maps each onto its BSDFs
 /// (render/material_bsdf.h, docs/rendering.md), Phong included.
@@ -100,7 +126,23 @@ struct Material {
   /// KHR_materials_emissive_strength, Blender's Strength). Whitted adds `emission` alone: its
   /// image is a display colour, not radiance, and a strength would blow it out.
   float emission_strength = 1.f;
+  MaterialMaps maps{};  ///< optional images varying the parameters above over the surface
 };
+
+/// A material's physically based parameters at one point of its surface, its textures applied.
+struct MaterialPoint {
+  Color base;                ///< diffuse_color() there
+  float roughness = 0.f;     ///< `roughness` times the metallic-roughness map's green
+  float metallic = 0.f;      ///< `metallic` times the map's blue
+  float transmission = 0.f;  ///< `transmission` times the transmission map's red
+};
+
+/// The parameters of `m` at surface coordinates (u, v).
+MaterialPoint material_at(const Material& m, float u, float v);
+
+/// The radiance the path integrator takes `m` to emit at surface coordinates (u, v):
+/// emission x emission_strength, times the emission map there.
+Color emitted_radiance(const Material& m, float u, float v);
 
 /// The diffuse colour of `m` at surface coordinates (u, v): the material colour, varied by its
 /// texture. An image texture without an image leaves the colour as it is.

@@ -105,13 +105,47 @@ Material GltfReader::convert_material(int index) {
     out.transmittance = static_cast<float>(1.0 - std::clamp(c[3], 0.0, 1.0));
     out.ior = 1.f;
   }
-  if (pbr.baseColorTexture.index != -1) {
-    const std::string texture_element = element + ".pbrMetallicRoughness.baseColorTexture";
-    out.texture = Texture::from_image(texture(pbr.baseColorTexture.index, texture_element));
-    if (pbr.baseColorTexture.texCoord < 0) fail(texture_element, "texCoord must be >= 0");
-    m_uv_set[static_cast<std::size_t>(index + 1)] = pbr.baseColorTexture.texCoord;
+  constexpr TextureEncoding kSrgb = TextureEncoding::kSrgb, kLinear = TextureEncoding::kLinear;
+  const auto map = [&](const auto& info, const std::string& name, TextureEncoding encoding) {
+    return info.index == -1 ? nullptr
+                            : material_texture(index, info.index, info.texCoord, element + "." + name, encoding);
+  };
+  if (auto image = map(pbr.baseColorTexture, "pbrMetallicRoughness.baseColorTexture", kSrgb))
+    out.texture = Texture::from_image(std::move(image));
+  out.maps.metallic_roughness =
+      map(pbr.metallicRoughnessTexture, "pbrMetallicRoughness.metallicRoughnessTexture", kLinear);
+  out.maps.emission = map(in.emissiveTexture, "emissiveTexture", kSrgb);
+  out.maps.normal = map(in.normalTexture, "normalTexture", kLinear);
+  if (!std::isfinite(in.normalTexture.scale)) fail(element + ".normalTexture", "scale must be a finite number");
+  out.maps.normal_scale = static_cast<float>(in.normalTexture.scale);
+  // KHR_materials_transmission's texture is a plain JSON object inside the extension.
+  if (const auto it = in.extensions.find("KHR_materials_transmission");
+      it != in.extensions.end() && it->second.IsObject() && it->second.Has("transmissionTexture")) {
+    const std::string where = element + ".extensions.KHR_materials_transmission.transmissionTexture";
+    const tinygltf::Value& info = it->second.Get("transmissionTexture");
+    const auto integer = [&](const char* key, int fallback) {
+      if (!info.Has(key)) return fallback;
+      const tinygltf::Value& v = info.Get(key);
+      if (!v.IsInt()) fail(where, std::string(key) + " must be an integer");
+      return v.Get<int>();
+    };
+    if (!info.IsObject() || !info.Has("index")) fail(where, "must be an object with an index");
+    out.maps.transmission = material_texture(index, integer("index", -1), integer("texCoord", 0), where, kLinear);
   }
   return out;
+}
+
+std::shared_ptr<const TextureImage> GltfReader::material_texture(int material, int texture_index, int tex_coord,
+                                                                 const std::string& element, TextureEncoding encoding) {
+  if (tex_coord < 0) fail(element, "texCoord must be >= 0");
+  int& set = m_uv_set[static_cast<std::size_t>(material + 1)];
+  if (set == -1) {
+    set = tex_coord;
+  } else if (set != tex_coord) {
+    warn(element + ": reads TEXCOORD_" + std::to_string(tex_coord) +
+         ", but raylab keeps one set per material: it reads TEXCOORD_" + std::to_string(set));
+  }
+  return texture(texture_index, element, encoding);
 }
 
 }  // namespace raylab::gltf_detail

@@ -51,8 +51,7 @@ void GltfReader::add_primitive(const tinygltf::Primitive& p, const Transform& wo
   if (const int set = m_uv_set[p.material + 1]; set >= 0) {
     const std::string name = "TEXCOORD_" + std::to_string(set);
     const int texcoord = attribute(p, name);
-    if (texcoord == -1)
-      fail(element, "its material's base colour texture reads " + name + ", which the primitive lacks");
+    if (texcoord == -1) fail(element, "a texture of its material reads " + name + ", which the primitive lacks");
     const AccessorData ta = accessor(
         texcoord,
         {"TEXCOORD",

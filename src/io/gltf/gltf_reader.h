@@ -7,6 +7,7 @@
 // gltf_reader.cpp.
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -86,17 +87,24 @@ class GltfReader {
   // --- Materials (gltf_materials.cpp)
 
   /// The object of glTF material `index` (-1: none), created with its material on first use.
-  /// Also records which TEXCOORD set the material's base colour texture reads (-1: none).
+  /// Also records which TEXCOORD set the material's textures read (-1: none).
   std::uint32_t object_for(int index, const std::string& user);
   /// The raylab material of glTF material `index`.
   Material convert_material(int index);
+  /// The image of a texture reference of material `material` (`element` names it, texCoord
+  /// `tex_coord`), decoded with `encoding`; the material's set of texture coordinates becomes
+  /// tex_coord (raylab keeps one set per material: a second set is warned about and read as the
+  /// first).
+  std::shared_ptr<const TextureImage> material_texture(int material, int texture, int tex_coord,
+                                                       const std::string& element, TextureEncoding encoding);
 
   // --- Textures (gltf_textures.cpp)
 
-  /// The image of texture `index` (used by `user`), decoded on first use.
-  std::shared_ptr<const TextureImage> texture(int index, const std::string& user);
+  /// The image of texture `index` (used by `user`), decoded on first use with `encoding`.
+  std::shared_ptr<const TextureImage> texture(int index, const std::string& user,
+                                              TextureEncoding encoding = TextureEncoding::kSrgb);
   /// Decodes image `index`, from its buffer view or from the bytes its URI gave.
-  std::shared_ptr<const TextureImage> decode_image(int index);
+  std::shared_ptr<const TextureImage> decode_image(int index, TextureEncoding encoding);
 
   std::string m_path;
   const tinygltf::Model& m_model;
@@ -105,9 +113,10 @@ class GltfReader {
   GltfLoadOptions m_options;
   MeshLoadReport m_report;
   bool m_camera_taken = false;
-  std::vector<std::optional<std::uint32_t>> m_objects;        // by material index + 1
-  std::vector<int> m_uv_set;                                  // by material index + 1
-  std::vector<std::shared_ptr<const TextureImage>> m_images;  // by image index
+  std::vector<std::optional<std::uint32_t>> m_objects;  // by material index + 1
+  std::vector<int> m_uv_set;                            // by material index + 1
+  // By image index and encoding: one image may serve as colour (sRGB) and as data (linear).
+  std::map<std::pair<int, TextureEncoding>, std::shared_ptr<const TextureImage>> m_images;
 };
 
 }  // namespace raylab::gltf_detail

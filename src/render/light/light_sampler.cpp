@@ -4,8 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <unordered_map>
 
 #include "raylab/geometry/planar.h"
+#include "raylab/geometry/shading.h"
 #include "raylab/geometry/sphere.h"
 #include "raylab/render/whitted.h"
 #include "raylab/scene/environment.h"
@@ -45,10 +47,54 @@ Environment background_environment(const RenderSettings& s) {
 
 bool emits(Color c) { return c.x > 0.f || c.y > 0.f || c.z > 0.f; }
 
+// The mean luminance of `image`'s texels: what an emission map does to its emitter's power.
+float mean_luminance(const TextureImage& image) {
+  double sum = 0.0;
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x) sum += luminance(image.texel(x, y));
+  }
+  return static_cast<float>(sum / (static_cast<double>(image.width()) * image.height()));
+}
+
+// The surface coordinates surface_at gives point `at` of flat or round primitive `prim`: from
+// the point's barycentric (triangle) or edge (quad) coordinates, which surface_at reads from the
+// hit, or from the point itself (sphere, disk), seen along its normal.
+Vec2 surface_coordinates(const Geometry& g, std::uint32_t prim, const SurfacePoint& at) {
+  Hit hit;
+  hit.prim_id = prim;
+  hit.t = 1.f;
+  const ShapeRef ref = g.resolve(prim);
+  if (ref.kind == ShapeKind::kTriangle || ref.kind == ShapeKind::kQuad) {
+    Vec3 origin, e1, e2;
+    if (ref.kind == ShapeKind::kTriangle) {
+      const Triangle& t = g.triangles[ref.index];
+      origin = t.p0, e1 = t.p1 - t.p0, e2 = t.p2 - t.p0;
+    } else {
+      const Quad& q = g.quads[ref.index];
+      origin = q.corner, e1 = q.edge_u, e2 = q.edge_v;
+    }
+    // at - origin = hit.u e1 + hit.v e2, solved in the plane by the normal equations.
+    const Vec3 d = at.position - origin;
+    const float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
+    const float d1 = dot(d, e1), d2 = dot(d, e2);
+    const float det = d11 * d22 - d12 * d12;
+    if (det > 0.f) {
+      hit.u = (d22 * d1 - d12 * d2) / det;
+      hit.v = (d11 * d2 - d12 * d1) / det;
+    }
+  }
+  Ray ray;
+  ray.origin = at.position + at.normal;
+  ray.direction = -at.normal;
+  const SurfaceInteraction si = surface_at(g, ray, hit);
+  return {si.u, si.v};
+}
+
 }  // namespace
 
 LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
   std::vector<float> power;
+  std::unordered_map<const TextureImage*, float> mean_of_map;  // each emission map's mean, once
   const Box3 bounds = scene.bounds();
   const float radius = !bounds.empty() ? 0.5f * length(bounds.hi - bounds.lo) : 1.f;
 
@@ -60,6 +106,8 @@ LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
     const Material& m = scene.materials[scene.objects[g.object_of(id)].material];
     const Color radiance = m.emission * m.emission_strength;
     if (!emits(radiance)) continue;
+    const TextureImage* map = m.maps.emission.get();
+    if (map != nullptr && !mean_of_map.contains(map)) mean_of_map[map] = mean_luminance(*map);
     if (m_light_of_prim.empty()) {
       m_light_of_prim.assign(prims, -1);
       m_emission_of_prim.assign(prims, Color{0.f});
@@ -85,8 +133,10 @@ LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
     m_emission_of_prim[id] = radiance;
     if (!(area > 0.f)) continue;
     m_light_of_prim[id] = static_cast<std::int32_t>(m_lights.size());
-    m_lights.push_back({Kind::kShape, id, area, radiance});
-    power.push_back(luminance(radiance) * area * kPi);  // one side
+    m_lights.push_back({Kind::kShape, id, area, radiance, map});
+    // One side; an emission map scales the power by its mean (the light's choice only needs to
+    // be roughly proportional to what it gives, and the map varies within each primitive anyway).
+    power.push_back(luminance(radiance) * area * kPi * (map != nullptr ? mean_of_map[map] : 1.f));
   }
 
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
@@ -233,6 +283,10 @@ std::optional<LightSample> LightSampler::sample(Vec3 p, float u_choice, Sample2 
   ls.pdf = area_pdf(p, at.position, at.normal, e.area, choice);
   if (!(ls.pdf > 0.f) || !std::isfinite(ls.pdf)) return std::nullopt;
   ls.li = e.radiance;
+  if (e.emission_map != nullptr) {
+    const Vec2 uv = surface_coordinates(m_scene.geometry, e.index, at);
+    ls.li = ls.li * e.emission_map->sample(uv.x, uv.y);
+  }
   return ls;
 }
 
@@ -242,8 +296,12 @@ float LightSampler::emitter_pdf(Vec3 from, std::uint32_t prim, Vec3 at, Vec3 nor
   return area_pdf(from, at, normal, m_lights[entry].area, choice_probability(entry));
 }
 
-Color LightSampler::emitted(std::uint32_t prim) const {
-  return prim < m_emission_of_prim.size() ? m_emission_of_prim[prim] : Color{0.f};
+Color LightSampler::emitted(std::uint32_t prim, float u, float v) const {
+  if (prim >= m_emission_of_prim.size()) return Color{0.f};
+  const Color e = m_emission_of_prim[prim];
+  if (!emits(e)) return e;
+  const Material& m = m_scene.materials[m_scene.objects[m_scene.geometry.object_of(prim)].material];
+  return m.maps.emission ? e * m.maps.emission->sample(u, v) : e;
 }
 
 std::optional<LightShapeHit> LightSampler::hit_light_shape(const Ray& ray, float tmax) const {

@@ -69,8 +69,9 @@ class LightSampler {
   /// (normal `normal`) of emissive scene primitive `prim`; 0 when that primitive is not a light.
   float emitter_pdf(Vec3 from, std::uint32_t prim, Vec3 at, Vec3 normal) const;
 
-  /// The radiance emitted by scene primitive `prim` (0 when it is not emissive) on its front side.
-  Color emitted(std::uint32_t prim) const;
+  /// The radiance emitted by scene primitive `prim` (0 when it is not emissive) on its front side,
+  /// at surface coordinates (u, v) (which matter only where its material has an emission map).
+  Color emitted(std::uint32_t prim, float u, float v) const;
 
   /// The nearest of the light shapes that are not geometry along `ray` before `tmax`.
   std::optional<LightShapeHit> hit_light_shape(const Ray& ray, float tmax) const;
@@ -90,6 +91,7 @@ class LightSampler {
     std::uint32_t index;  // kPoint, kDirectional, kLight*: scene light; kShape: global primitive id
     float area = 0.f;     // kShape, kLight*
     Color radiance{0.f};  // kShape, kLight*: emitted radiance; kPoint, kDirectional: pi I
+    const TextureImage* emission_map = nullptr;  // kShape: multiplies `radiance` over the surface
   };
 
   // The solid-angle density of a point `at` (normal `normal`) of an area light of area `area`,
