@@ -40,6 +40,34 @@ bool cast_shadow_ray(const TraceContext& ctx, const Ray& ray) {
   return blocked;
 }
 
+// The pairs of one vertex, each computed when first used: an addressed source computes only the
+// pairs a vertex reads, which saves the hashing of those it does not (the light choice with one
+// light, the lobe of a one-lobe BSDF, the bounce after the last vertex); a plain generator's
+// pairs are all drawn up front, in order, so that its stream is the same either way.
+class VertexPairs {
+ public:
+  VertexPairs(SampleSource& source, int first) : m_source(source), m_first(first) {
+    if (source.addressed()) return;
+    source.seek_pair(first);
+    for (Sample2& p : m_pairs) p = source.next_2d();
+    m_have = 0b111;
+  }
+  // Pair `i` (0: light choice and lobe, 1: light point, 2: BSDF direction) of the vertex.
+  Sample2 operator[](int i) {
+    if ((m_have >> i & 1u) == 0) {
+      m_pairs[i] = m_source.pair(m_first + i);
+      m_have |= 1u << i;
+    }
+    return m_pairs[i];
+  }
+
+ private:
+  SampleSource& m_source;
+  int m_first;
+  Sample2 m_pairs[3]{};
+  unsigned m_have = 0;
+};
+
 // Shadow rays stop this fraction short of a light point, so that the emitter's own surface
 // does not block the ray that reaches it.
 constexpr float kShadowShorten = 1e-3f;
@@ -127,10 +155,8 @@ Color PathIntegrator::radiance(const TraceContext& ctx, const Ray& camera_ray, S
       radiance += throughput * emitted * found_light_weight(previous_delta, previous_pdf, light_pdf);
     }
 
-    samples.seek_pair(1 + kPairsPerVertex * vertex);
-    const Sample2 u_choice = samples.next_2d();  // (which light, which BSDF lobe)
-    const Sample2 u_light = samples.next_2d();
-    const Sample2 u_bsdf = samples.next_2d();
+    static_assert(kPairsPerVertex == 3, "VertexPairs holds the three pairs of a vertex");
+    VertexPairs pairs(samples, 1 + kPairsPerVertex * vertex);  // (light and lobe choice, light point, BSDF)
 
     const MaterialPoint at = material_at(material, si.u, si.v);
     const Bsdf bsdf = material.model == MaterialModel::kMetallicRoughness
@@ -148,7 +174,8 @@ Color PathIntegrator::radiance(const TraceContext& ctx, const Ray& camera_ray, S
     // that the BSDF sample finds the same light (unless this is the last vertex, where the
     // light sample is the only estimate).
     if (!bsdf.is_delta() && !m_lights.empty()) {
-      if (const std::optional<LightSample> ls = m_lights.sample(si.position, u_choice.x, u_light)) {
+      const float u_which = m_lights.chooses() ? pairs[0].x : 0.f;
+      if (const std::optional<LightSample> ls = m_lights.sample(si.position, u_which, pairs[1])) {
         const Vec3 wi = frame.to_local(ls->wi);
         // A light behind the geometric surface (seen from the side the ray arrived on) can only
         // reach it through it: only transmitting models may use it.
@@ -170,7 +197,7 @@ Color PathIntegrator::radiance(const TraceContext& ctx, const Ray& camera_ray, S
     if (last) break;
 
     // The next direction, from the BSDF.
-    const std::optional<BsdfSample> bs = bsdf.sample(wo, u_choice.y, u_bsdf);
+    const std::optional<BsdfSample> bs = bsdf.sample(wo, bsdf.chooses_lobe() ? pairs[0].y : 0.f, pairs[2]);
     if (!bs || !(bs->pdf > 0.f)) break;
     throughput = throughput * bs->weight;
     if (!(max_component(throughput) > 0.f)) break;

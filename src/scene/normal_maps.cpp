@@ -22,8 +22,7 @@ Vec3 normal_map_normal(const TextureImage& map, float scale, Vec3 n, const Surfa
   return dot(mapped, mapped) > 0.f ? normalize(mapped) : n;
 }
 
-Vec3 bump_map_normal(const TextureImage& map, float scale, Vec3 n, const SurfaceTangents& tangents, float u,
-                     float v) {
+Vec3 bump_map_normal(const TextureImage& map, float scale, Vec3 n, const SurfaceTangents& tangents, float u, float v) {
   const float du = 1.f / static_cast<float>(map.width());
   const float dv = 1.f / static_cast<float>(map.height());
   const auto height = [&](float uu, float vv) { return scale * map.sample(uu, vv).x; };

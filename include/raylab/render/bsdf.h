@@ -60,6 +60,8 @@ class Bsdf {
 
   /// The model.
   Model model() const { return m_model; }
+  /// True when sample() reads its `u_lobe` (models of two lobes: dielectric, plastic).
+  bool chooses_lobe() const { return m_model == Model::kDielectric || m_model == Model::kPlastic; }
   /// True when every lobe is a delta (a smooth mirror or smooth glass): eval and pdf are zero,
   /// and light sampling cannot help.
   bool is_delta() const;

@@ -41,6 +41,12 @@ class SampleSource {
   /// the previous bounce drew.
   void seek_pair(int k) { m_next_pair = k; }
 
+  /// True when pairs are addressed (the sample dimensions): pair(k) then gives what next_2d()
+  /// gives after seek_pair(k), and pairs not asked for cost nothing and change nothing.
+  bool addressed() const { return m_dims != nullptr; }
+  /// Pair `k` of an addressed source, without moving its position.
+  Sample2 pair(int k) const { return m_dims->pair(k, m_px, m_py, m_index, m_pixel_key); }
+
  private:
   Pcg32 m_rng;
   const SampleDimensions* m_dims = nullptr;

@@ -9,9 +9,12 @@
 /// comes from a twin of that sampler (same kind, same spp, its own seed), with the sample
 /// indices shuffled per pair and pixel (detail::shuffle, a cheap keyed bijection): within one pair the spp samples of a
 /// pixel keep the sampler's stratification (jittered strata, cmj's n-rooks, Sobol's (0,2)-net), and between pairs they
-/// are independent, as with pbrt's padded samplers. Samplers that place every pixel's samples alike (center, regular)
-/// have random twins (random, jittered): a path needs random numbers. Pairs from kStratifiedPairs on are independent
-/// uniform numbers.
+/// are independent, as with pbrt's padded samplers. A jittered twin is not a JitteredGridSampler
+/// object: its offsets inside the stratum come from one hash of the pair's key and the stratum
+/// (the sampler's own per-sample generator costs five times as much, and a path asks for two to
+/// three pairs at every vertex); the stratum rule is the same, point_in_interval. Samplers that place every pixel's
+/// samples alike (center, regular) have random twins (random, jittered): a path needs random numbers. Pairs from
+/// kStratifiedPairs on are independent uniform numbers.
 
 #include <cstdint>
 #include <memory>
@@ -43,7 +46,8 @@ class SampleDimensions {
   Sample2 pair(int k, int px, int py, int index, std::uint64_t key) const;
 
  private:
-  std::vector<std::unique_ptr<PixelSampler>> m_twins;  // m_twins[k - 1] gives pair k
+  std::vector<std::unique_ptr<PixelSampler>> m_twins;  // m_twins[k - 1] gives pair k (empty when jittered)
+  int m_jittered_strata = 0;                           // n when the twins are jittered (spp = n * n), else 0
   int m_spp;
   std::uint64_t m_seed;
 };

@@ -60,6 +60,8 @@ class LightSampler {
 
   /// True when the scene has no light at all.
   bool empty() const { return m_lights.empty(); }
+  /// True when sample() reads its `u_choice` (more than one light to choose from).
+  bool chooses() const { return m_lights.size() > 1; }
 
   /// Chooses a light with `u_choice`, a point on it with `u`, as seen from `p`; nullopt when
   /// the chosen light gives nothing there.
