@@ -177,8 +177,8 @@ std::vector<std::string> format_losses(const Scene& scene, std::string_view exte
   } else {
     add_texture_losses(out, scene, true);
   }
-  // The environment: a scene file carries a constant one, no format its image (yet).
-  if (scene.environment && (scene.environment->image || extension != ".json")) out.emplace_back("environment");
+  // The environment: only a scene file carries it (an image as a PFM beside it).
+  if (scene.environment && extension != ".json") out.emplace_back("environment");
   return out;
 }
 

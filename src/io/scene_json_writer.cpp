@@ -7,6 +7,7 @@
 #include "material_model_names.h"
 #include "raylab/core/error.h"
 #include "raylab/io/float_text.h"
+#include "raylab/io/image_io.h"
 #include "raylab/io/mtl_writer.h"
 #include "raylab/io/ply_writer.h"
 #include "raylab/io/texture_io.h"
@@ -306,6 +307,25 @@ class ObjectWriter {
   const std::vector<std::string>& m_names;
 };
 
+// The environment: its colour, or its image as a float PFM beside the scene file (32-bit floats,
+// so that the radiances read back bit for bit), with its rotation and scale.
+void environment(JsonText& j, const Environment& e, const std::string& stem, std::vector<SidecarFile>& files) {
+  j.key("environment").open('{');
+  if (e.image) {
+    Film film(e.image->width, e.image->height);
+    for (int y = 0; y < film.height(); ++y) {
+      for (int x = 0; x < film.width(); ++x) film.at(x, y) = e.image->texels[std::size_t(y) * film.width() + x];
+    }
+    const std::vector<unsigned char> pfm = encode_image(film, ".pfm");
+    SidecarFile file{stem + ".env.pfm", std::string(pfm.begin(), pfm.end())};
+    j.key("file").string(file.name);
+    files.push_back(std::move(file));
+  } else {
+    j.key("color").vec(e.color);
+  }
+  j.key("rotate").number(e.rotate_degrees).key("scale").number(e.scale).close('}');
+}
+
 }  // namespace
 
 SceneJsonFiles encode_scene_json(const Scene& scene, const std::string& stem) {
@@ -320,11 +340,7 @@ SceneJsonFiles encode_scene_json(const Scene& scene, const std::string& stem) {
   render(j, scene.settings);
   materials(j, scene, names, texture_files(scene, stem, files.textures));
   lights(j, scene.lights, scene.objects);
-  if (scene.environment && !scene.environment->image) {
-    const Environment& e = *scene.environment;
-    j.key("environment").open('{').key("color").vec(e.color).key("rotate").number(e.rotate_degrees);
-    j.key("scale").number(e.scale).close('}');
-  }
+  if (scene.environment) environment(j, *scene.environment, stem, files.textures);
   j.key("objects").open('[', true);
   ObjectWriter objects(j, scene, names);
   objects.meshes(stem, files.meshes);

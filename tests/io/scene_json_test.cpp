@@ -394,7 +394,7 @@ TEST(SceneJson, PhysicallyBasedMembersLightObjectsAndEnvironmentRoundTrip) {
   EXPECT_EQ(back.environment->rotate_degrees, 15.f);
   const Scene showcase = make_builtin_scene("showcase");
   Scene flat = showcase;
-  flat.environment.reset();  // an image environment is a loss of the format, reported apart
+  flat.environment.reset();  // the materials alone here; the sky's image below
   const Scene materials = parse_scene_json(encode_scene_json(flat, "s").json, "s.json", ".");
   // Materials come back in the file's (alphabetical) order: compare object by object.
   ASSERT_EQ(materials.objects.size(), showcase.objects.size());
@@ -406,7 +406,23 @@ TEST(SceneJson, PhysicallyBasedMembersLightObjectsAndEnvironmentRoundTrip) {
     EXPECT_EQ(a.conductor_eta, b.conductor_eta) << a.name;
     EXPECT_EQ(a.conductor_k, b.conductor_k) << a.name;
   }
-  EXPECT_NE(losses_message("s.json", format_losses(showcase, ".json", false)).find("environment"), std::string::npos);
+  // The showcase's sky is an image: it goes to a float PFM beside the scene file and comes back
+  // bit for bit, with its rotation and scale; only formats other than scene files lose it.
+  const fs::path dir = fs::temp_directory_path() / ("raylab-env-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const SceneJsonFiles files = encode_scene_json(showcase, "sky");
+  for (const SidecarFile& f : files.textures) std::ofstream(dir / f.name, std::ios::binary) << f.bytes;
+  const Scene sky = parse_scene_json(files.json, (dir / "sky.json").string(), dir.string());
+  ASSERT_TRUE(sky.environment && sky.environment->image);
+  const EnvironmentImage &a = *showcase.environment->image, &b = *sky.environment->image;
+  ASSERT_EQ(a.width, b.width);
+  ASSERT_EQ(a.height, b.height);
+  EXPECT_TRUE(a.texels == b.texels);
+  EXPECT_EQ(sky.environment->rotate_degrees, showcase.environment->rotate_degrees);
+  EXPECT_EQ(sky.environment->scale, showcase.environment->scale);
+  fs::remove_all(dir);
+  EXPECT_EQ(losses_message("s.json", format_losses(showcase, ".json", false)).find("environment"), std::string::npos);
+  EXPECT_NE(losses_message("s.obj", format_losses(showcase, ".obj", false)).find("environment"), std::string::npos);
 }
 
 TEST(SceneJson, ALightNamingNoObjectIsRefused) {

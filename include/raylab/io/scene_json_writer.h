@@ -19,7 +19,7 @@ struct SidecarFile {
 struct SceneJsonFiles {
   std::string json;                   ///< the scene file's text
   std::vector<SidecarFile> meshes;    ///< binary PLY files named by its `mesh` objects
-  std::vector<SidecarFile> textures;  ///< PNG files named by its image textures
+  std::vector<SidecarFile> textures;  ///< PNG files of its image textures and maps, PFM of its environment image
 };
 
 /// `scene` as a raylab scene file that reads back to the same scene: camera (and camera path),
@@ -31,7 +31,8 @@ struct SceneJsonFiles {
 /// carry no normals, and the runs keep the triangles in their order, which the structures
 /// built over them and so the image depend on. Image textures go to PNG sidecars
 /// `<stem>.tex<k>.png`, one per image, when 8 bits give their texels back exactly
-/// (encode_texture_png()). What the format cannot carry is left out (other image textures,
+/// (encode_texture_png()), material maps likewise, and an environment image to `<stem>.env.pfm`
+/// (float, exact). What the format cannot carry is left out (other image textures,
 /// zone plates; format_losses() names them). `scene` must hold no instances
 /// (bake_instances() first); throws UsageError otherwise.
 SceneJsonFiles encode_scene_json(const Scene& scene, const std::string& stem);
