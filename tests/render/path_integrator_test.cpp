@@ -178,7 +178,7 @@ TEST(PathIntegrator, DirectLightAtDepthOneIsWhittedsDirectLight) {
   }
 }
 
-// A floor and a glossy ball under an emissive quad, in a dim environment: every strategy has
+// A floor and a glossy ball under an emissive quad, beside an emissive cone, in a dim environment: every strategy has
 // light it finds well and light it finds badly.
 Scene strategy_scene() {
   Scene s;
@@ -192,6 +192,11 @@ Scene strategy_scene() {
   s.geometry.add(Sphere{Vec3{0.f, 1.f, 0.f}, 1.f}, s.add_object("ball", ball));
   s.geometry.add(Quad{Vec3{-1.f, 4.f, -1.f}, Vec3{2.f, 0.f, 0.f}, Vec3{0.f, 0.f, 2.f}},
                  s.add_object("lamp", s.add_material(lamp)));
+  // A second light, a glowing tapered tube beside the ball: a cone is sampled by area too.
+  Material tube = model(MaterialModel::kDiffuse, Color{0.f});
+  tube.emission = {0.5f, 1.f, 2.f};
+  s.geometry.add(Cylinder{Vec3{2.2f, 0.f, -0.5f}, 0.3f, Vec3{2.f, 2.5f, -0.8f}, 0.1f},
+                 s.add_object("tube", s.add_material(tube)));
   return s;
 }
 

@@ -56,15 +56,31 @@ float mean_luminance(const TextureImage& image) {
   return static_cast<float>(sum / (static_cast<double>(image.width()) * image.height()));
 }
 
+// (a, b) with p - origin = a e1 + b e2, for p in the plane of the two edges: solved by the
+// normal equations. (0, 0) when the edges span no area.
+Vec2 plane_coordinates(Vec3 p, Vec3 origin, Vec3 e1, Vec3 e2) {
+  const Vec3 d = p - origin;
+  const float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
+  const float d1 = dot(d, e1), d2 = dot(d, e2);
+  const float det = d11 * d22 - d12 * d12;
+  if (!(det > 0.f)) return {0.f, 0.f};
+  return {(d22 * d1 - d12 * d2) / det, (d11 * d2 - d12 * d1) / det};
+}
+
 // The surface coordinates surface_at gives point `at` of flat or round primitive `prim`: from
-// the point's barycentric (triangle) or edge (quad) coordinates, which surface_at reads from the
-// hit, or from the point itself (sphere, disk), seen along its normal.
+// the point's barycentric (triangle), edge (quad) or height (cylinder) coordinates, which
+// surface_at reads from the hit, or from the point itself (sphere, disk), seen along its normal.
 Vec2 surface_coordinates(const Geometry& g, std::uint32_t prim, const SurfacePoint& at) {
   Hit hit;
   hit.prim_id = prim;
   hit.t = 1.f;
   const ShapeRef ref = g.resolve(prim);
-  if (ref.kind == ShapeKind::kTriangle || ref.kind == ShapeKind::kQuad) {
+  if (ref.kind == ShapeKind::kCylinder) {
+    // surface_at reads a cylinder's height fraction from the hit.
+    const Cylinder& c = g.cylinders[ref.index];
+    const Vec3 axis = c.apex - c.base;
+    hit.v = dot(at.position - c.base, axis) / dot(axis, axis);
+  } else if (ref.kind == ShapeKind::kTriangle || ref.kind == ShapeKind::kQuad) {
     Vec3 origin, e1, e2;
     if (ref.kind == ShapeKind::kTriangle) {
       const Triangle& t = g.triangles[ref.index];
@@ -73,15 +89,9 @@ Vec2 surface_coordinates(const Geometry& g, std::uint32_t prim, const SurfacePoi
       const Quad& q = g.quads[ref.index];
       origin = q.corner, e1 = q.edge_u, e2 = q.edge_v;
     }
-    // at - origin = hit.u e1 + hit.v e2, solved in the plane by the normal equations.
-    const Vec3 d = at.position - origin;
-    const float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
-    const float d1 = dot(d, e1), d2 = dot(d, e2);
-    const float det = d11 * d22 - d12 * d12;
-    if (det > 0.f) {
-      hit.u = (d22 * d1 - d12 * d2) / det;
-      hit.v = (d11 * d2 - d12 * d1) / det;
-    }
+    const Vec2 c = plane_coordinates(at.position, origin, e1, e2);
+    hit.u = c.x;
+    hit.v = c.y;
   }
   Ray ray;
   ray.origin = at.position + at.normal;
@@ -98,8 +108,7 @@ LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
   const Box3 bounds = scene.bounds();
   const float radius = !bounds.empty() ? 0.5f * length(bounds.hi - bounds.lo) : 1.f;
 
-  // Emissive primitives of the scene's own geometry (instanced prototypes glow where a ray hits
-  // them, but are not sampled: docs/rendering.md).
+  // Emissive primitives of the scene's own geometry.
   const Geometry& g = scene.geometry;
   const std::uint32_t prims = g.size();
   for (std::uint32_t id = 0; id < prims; ++id) {
@@ -128,7 +137,8 @@ LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
         area = quad_area(g.quads[ref.index]);
         break;
       case ShapeKind::kCylinder:
-        break;  // glows when hit; not sampled
+        area = cylinder_area(g.cylinders[ref.index]);
+        break;
     }
     m_emission_of_prim[id] = radiance;
     if (!(area > 0.f)) continue;
@@ -137,6 +147,32 @@ LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
     // One side; an emission map scales the power by its mean (the light's choice only needs to
     // be roughly proportional to what it gives, and the map varies within each primitive anyway).
     power.push_back(luminance(radiance) * area * kPi * (map != nullptr ? mean_of_map[map] : 1.f));
+  }
+
+  // Emissive triangles of instanced meshes, carried into the world (an affine map keeps a
+  // triangle a triangle, and area sampling uniform). Other instanced shapes glow where a ray
+  // hits them but are not sampled (prototypes come from mesh files: triangles).
+  for (const Instance& inst : scene.instances) {
+    const Geometry& proto = scene.prototypes[inst.prototype];
+    for (std::uint32_t local = 0; local < proto.triangles.size(); ++local) {
+      const Material& m = scene.materials[scene.objects[inst.first_object + proto.object_of(local)].material];
+      const Color radiance = m.emission * m.emission_strength;
+      if (!emits(radiance)) continue;
+      const Triangle& t = proto.triangles[local];
+      const Triangle world{inst.to_world.point(t.p0), inst.to_world.point(t.p1), inst.to_world.point(t.p2)};
+      const float area = triangle_area(world);
+      const Vec3 normal = inst.to_world.normal(triangle_normal(t));
+      if (!(area > 0.f) || !(dot(normal, normal) > 0.f)) continue;
+      const TextureImage* map = m.maps.emission.get();
+      if (map != nullptr && !mean_of_map.contains(map)) mean_of_map[map] = mean_luminance(*map);
+      const std::uint32_t id = g.size() + inst.first_prim_offset + local;
+      m_light_of_instanced[id] = static_cast<std::int32_t>(m_lights.size());
+      Entry e{Kind::kInstancedTriangle, id, area, radiance, map};
+      e.instanced = static_cast<std::uint32_t>(m_instanced.size());
+      m_instanced.push_back({world, normalize(normal), inst.prototype, local});
+      m_lights.push_back(e);
+      power.push_back(luminance(radiance) * area * kPi * (map != nullptr ? mean_of_map[map] : 1.f));
+    }
   }
 
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
@@ -244,6 +280,7 @@ std::optional<LightSample> LightSampler::sample(Vec3 p, float u_choice, Sample2 
       return ls;
     }
     case Kind::kShape:
+    case Kind::kInstancedTriangle:
     case Kind::kLightQuad:
     case Kind::kLightSphere:
       break;
@@ -266,8 +303,12 @@ std::optional<LightSample> LightSampler::sample(Vec3 p, float u_choice, Sample2 
         at = sample_quad(g.quads[ref.index], u);
         break;
       case ShapeKind::kCylinder:
-        return std::nullopt;
+        at = sample_cylinder(g.cylinders[ref.index], u);
+        break;
     }
+  } else if (e.kind == Kind::kInstancedTriangle) {
+    const InstancedTriangle& t = m_instanced[e.instanced];
+    at = {sample_triangle(t.world, u).position, t.normal};
   } else {
     const Light& light = m_scene.lights[e.index];
     at = e.kind == Kind::kLightQuad ? sample_quad(Quad{light.position, light.edge_u, light.edge_v}, u)
@@ -276,7 +317,8 @@ std::optional<LightSample> LightSampler::sample(Vec3 p, float u_choice, Sample2 
   const Vec3 to = at.position - p;
   // An emitter of the scene lights the side its normal points to (a sphere or quad light that
   // is not geometry, both sides).
-  if (e.kind == Kind::kShape && !(dot(at.normal, to) < 0.f)) return std::nullopt;
+  const bool geometry = e.kind == Kind::kShape || e.kind == Kind::kInstancedTriangle;
+  if (geometry && !(dot(at.normal, to) < 0.f)) return std::nullopt;
   ls.distance = length(to);
   if (!(ls.distance > 0.f)) return std::nullopt;
   ls.wi = to / ls.distance;
@@ -284,15 +326,34 @@ std::optional<LightSample> LightSampler::sample(Vec3 p, float u_choice, Sample2 
   if (!(ls.pdf > 0.f) || !std::isfinite(ls.pdf)) return std::nullopt;
   ls.li = e.radiance;
   if (e.emission_map != nullptr) {
-    const Vec2 uv = surface_coordinates(m_scene.geometry, e.index, at);
+    Vec2 uv;
+    if (e.kind == Kind::kInstancedTriangle) {
+      // An affine map keeps barycentric coordinates: the world point's are the prototype's.
+      const InstancedTriangle& t = m_instanced[e.instanced];
+      const Triangle& w = t.world;
+      const Vec2 b = plane_coordinates(at.position, w.p0, w.p1 - w.p0, w.p2 - w.p0);
+      const Geometry& proto = m_scene.prototypes[t.prototype];
+      const Triangle& local = proto.triangles[t.local];
+      uv = surface_coordinates(
+          proto, t.local,
+          {local.p0 + (local.p1 - local.p0) * b.x + (local.p2 - local.p0) * b.y, normalize(triangle_normal(local))});
+    } else {
+      uv = surface_coordinates(m_scene.geometry, e.index, at);
+    }
     ls.li = ls.li * e.emission_map->sample(uv.x, uv.y);
   }
   return ls;
 }
 
 float LightSampler::emitter_pdf(Vec3 from, std::uint32_t prim, Vec3 at, Vec3 normal) const {
-  if (prim >= m_light_of_prim.size() || m_light_of_prim[prim] < 0) return 0.f;
-  const auto entry = static_cast<std::size_t>(m_light_of_prim[prim]);
+  std::int32_t light = -1;
+  if (prim < m_light_of_prim.size()) {
+    light = m_light_of_prim[prim];
+  } else if (const auto it = m_light_of_instanced.find(prim); it != m_light_of_instanced.end()) {
+    light = it->second;
+  }
+  if (light < 0) return 0.f;
+  const auto entry = static_cast<std::size_t>(light);
   return area_pdf(from, at, normal, m_lights[entry].area, choice_probability(entry));
 }
 

@@ -1,11 +1,13 @@
 #pragma once
 // Internal to the render module: every light of a scene as the path integrator sees it, and the
-// choice among them by power. An emitter is geometry: each emissive triangle, sphere, disk and
-// quad of the scene's own primitives is a light of its own, so that a bounce ray that hits it
+// choice among them by power. An emitter is geometry: each emissive triangle, sphere, disk,
+// quad, cylinder and cone of the scene's own primitives, and each emissive triangle of an
+// instanced mesh, is a light of its own, so that a bounce ray that hits it
 // and a shadow ray toward it are two estimates of the same light (combined by MIS).
 
 #include <cstdint>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "raylab/core/ray.h"
@@ -87,13 +89,29 @@ class LightSampler {
   float environment_pdf(Vec3 dir) const;
 
  private:
-  enum class Kind : std::uint8_t { kPoint, kDirectional, kShape, kLightQuad, kLightSphere, kEnvironment };
+  enum class Kind : std::uint8_t {
+    kPoint,
+    kDirectional,
+    kShape,
+    kInstancedTriangle,
+    kLightQuad,
+    kLightSphere,
+    kEnvironment
+  };
+  // An emissive triangle of an instanced prototype, carried into the world once.
+  struct InstancedTriangle {
+    Triangle world;           // the vertices in world space
+    Vec3 normal;              // world outward normal (the instance's normal transform: mirrors keep it)
+    std::uint32_t prototype;  // where its texture coordinates are
+    std::uint32_t local;      // its id in the prototype
+  };
   struct Entry {
     Kind kind;
     std::uint32_t index;  // kPoint, kDirectional, kLight*: scene light; kShape: global primitive id
     float area = 0.f;     // kShape, kLight*
     Color radiance{0.f};  // kShape, kLight*: emitted radiance; kPoint, kDirectional: pi I
-    const TextureImage* emission_map = nullptr;  // kShape: multiplies `radiance` over the surface
+    const TextureImage* emission_map = nullptr;  // kShape, kInstancedTriangle: multiplies `radiance`
+    std::uint32_t instanced = 0;                 // kInstancedTriangle: index in m_instanced
   };
 
   // The solid-angle density of a point `at` (normal `normal`) of an area light of area `area`,
@@ -105,9 +123,11 @@ class LightSampler {
   // The probability of choosing entry `i`.
   float choice_probability(std::size_t i) const;
 
-  std::optional<Distribution1D> m_choice;     // entries by power
-  std::vector<std::int32_t> m_light_of_prim;  // entry of each flat primitive, -1 when not a light
-  std::vector<Color> m_emission_of_prim;      // emitted radiance of each flat primitive
+  std::optional<Distribution1D> m_choice;      // entries by power
+  std::vector<std::int32_t> m_light_of_prim;   // entry of each flat primitive, -1 when not a light
+  std::vector<Color> m_emission_of_prim;       // emitted radiance of each flat primitive
+  std::vector<InstancedTriangle> m_instanced;  // the instanced emitters' triangles
+  std::unordered_map<std::uint32_t, std::int32_t> m_light_of_instanced;  // global id -> entry
   std::optional<EnvironmentLight> m_environment;
   std::int32_t m_environment_entry = -1;
   bool m_has_light_shapes = false;  // any kLightQuad or kLightSphere entry (hit_light_shape's loop)

@@ -4,6 +4,7 @@
 // and by Whitted's sphere and quad lights alike.
 
 #include "raylab/core/vec3.h"
+#include "raylab/geometry/cylinder.h"
 #include "raylab/geometry/planar.h"
 #include "raylab/geometry/sphere.h"
 #include "raylab/geometry/triangle.h"
@@ -29,6 +30,10 @@ SurfacePoint sample_sphere(const Sphere& s, Sample2 u);
 SurfacePoint sample_disk(const Disk& d, Sample2 u);
 /// See sample_triangle.
 SurfacePoint sample_quad(const Quad& q, Sample2 u);
+/// See sample_triangle: a point of the lateral surface of a cylinder or cone frustum, with its
+/// outward normal. Uniform in area: the height follows the radius (a linear density, inverted
+/// in closed form), the angle is uniform.
+SurfacePoint sample_cylinder(const Cylinder& c, Sample2 u);
 
 /// Surface areas.
 float triangle_area(const Triangle& t);
@@ -38,5 +43,7 @@ float sphere_area(const Sphere& s);
 float disk_area(const Disk& d);
 /// See triangle_area.
 float quad_area(const Quad& q);
+/// See triangle_area: the lateral surface, pi (r0 + r1) times the slant height.
+float cylinder_area(const Cylinder& c);
 
 }  // namespace raylab::detail
