@@ -3,7 +3,6 @@
 // input refused with an InputError that says where.
 
 #include <gtest/gtest.h>
-#include <stb/stb_image_write.h>
 
 #include <cmath>
 #include <cstring>
@@ -14,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "gltf_test_util.h"
 #include "io_test_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/gltf_loader.h"
@@ -30,31 +30,12 @@ constexpr int kUnsignedShort = 5123;
 constexpr int kUnsignedInt = 5125;
 constexpr int kFloat = 5126;
 
-std::string base64(const Bytes& in) {
-  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (std::size_t i = 0; i < in.size(); i += 3) {
-    const std::uint32_t n = (std::uint32_t{in[i]} << 16) | (i + 1 < in.size() ? std::uint32_t{in[i + 1]} << 8 : 0) |
-                            (i + 2 < in.size() ? std::uint32_t{in[i + 2]} : 0);
-    out += kDigits[(n >> 18) & 63];
-    out += kDigits[(n >> 12) & 63];
-    out += i + 1 < in.size() ? kDigits[(n >> 6) & 63] : '=';
-    out += i + 2 < in.size() ? kDigits[n & 63] : '=';
-  }
-  return out;
-}
-
-void sink(void* context, void* data, int size) {
-  auto* out = static_cast<Bytes*>(context);
-  out->insert(out->end(), static_cast<unsigned char*>(data), static_cast<unsigned char*>(data) + size);
-}
+using test::base64;
 
 // A 2 x 1 PNG, left texel red, right texel blue.
 Bytes red_blue_png() {
   const unsigned char rgb[] = {255, 0, 0, 0, 0, 255};
-  Bytes out;
-  stbi_write_png_to_func(sink, &out, 2, 1, 3, rgb, 6);
-  return out;
+  return test::png_bytes(2, 1, rgb);
 }
 
 void put32(Bytes& b, std::uint32_t v) {

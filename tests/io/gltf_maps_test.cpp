@@ -5,7 +5,6 @@
 // convert reports for maps a format cannot carry.
 
 #include <gtest/gtest.h>
-#include <stb/stb_image_write.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +18,7 @@
 #include <vector>
 
 #include "../test_util.h"
+#include "gltf_test_util.h"
 #include "io_test_util.h"
 #include "raylab/core/error.h"
 #include "raylab/io/format_losses.h"
@@ -33,31 +33,12 @@ using Bytes = std::vector<unsigned char>;
 
 constexpr int kFloat = 5126;
 
-std::string base64(const Bytes& in) {
-  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (std::size_t i = 0; i < in.size(); i += 3) {
-    const std::uint32_t n = (std::uint32_t{in[i]} << 16) | (i + 1 < in.size() ? std::uint32_t{in[i + 1]} << 8 : 0) |
-                            (i + 2 < in.size() ? std::uint32_t{in[i + 2]} : 0);
-    out += kDigits[(n >> 18) & 63];
-    out += kDigits[(n >> 12) & 63];
-    out += i + 1 < in.size() ? kDigits[(n >> 6) & 63] : '=';
-    out += i + 2 < in.size() ? kDigits[n & 63] : '=';
-  }
-  return out;
-}
-
-void sink(void* context, void* data, int size) {
-  auto* out = static_cast<Bytes*>(context);
-  out->insert(out->end(), static_cast<unsigned char*>(data), static_cast<unsigned char*>(data) + size);
-}
+using test::base64;
 
 /// A 1 x 1 8-bit RGB PNG holding the texel (r, g, b), as a data: URI.
 std::string png_uri(unsigned char r, unsigned char g, unsigned char b) {
   const unsigned char rgb[] = {r, g, b};
-  Bytes png;
-  stbi_write_png_to_func(sink, &png, 1, 1, 3, rgb, 3);
-  return "data:image/png;base64," + base64(png);
+  return "data:image/png;base64," + base64(test::png_bytes(1, 1, rgb));
 }
 
 /// An 8-bit value read as linear data: exactly s / 255, as the loader computes it.
