@@ -105,6 +105,12 @@ Vec2 surface_coordinates(const Geometry& g, std::uint32_t prim, const SurfacePoi
 LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
   std::vector<float> power;
   std::unordered_map<const TextureImage*, float> mean_of_map;  // each emission map's mean, once
+  // An emitter's power, one side: an emission map scales it by the map's mean (the choice only
+  // needs to be roughly proportional to what a light gives; the map varies within each primitive).
+  const auto emitter_power = [&](Color radiance, float area, const TextureImage* map) {
+    if (map != nullptr && !mean_of_map.contains(map)) mean_of_map[map] = mean_luminance(*map);
+    return luminance(radiance) * area * kPi * (map != nullptr ? mean_of_map[map] : 1.f);
+  };
   const Box3 bounds = scene.bounds();
   const float radius = !bounds.empty() ? 0.5f * length(bounds.hi - bounds.lo) : 1.f;
 
@@ -116,7 +122,6 @@ LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
     const Color radiance = m.emission * m.emission_strength;
     if (!emits(radiance)) continue;
     const TextureImage* map = m.maps.emission.get();
-    if (map != nullptr && !mean_of_map.contains(map)) mean_of_map[map] = mean_luminance(*map);
     if (m_light_of_prim.empty()) {
       m_light_of_prim.assign(prims, -1);
       m_emission_of_prim.assign(prims, Color{0.f});
@@ -144,9 +149,7 @@ LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
     if (!(area > 0.f)) continue;
     m_light_of_prim[id] = static_cast<std::int32_t>(m_lights.size());
     m_lights.push_back({Kind::kShape, id, area, radiance, map});
-    // One side; an emission map scales the power by its mean (the light's choice only needs to
-    // be roughly proportional to what it gives, and the map varies within each primitive anyway).
-    power.push_back(luminance(radiance) * area * kPi * (map != nullptr ? mean_of_map[map] : 1.f));
+    power.push_back(emitter_power(radiance, area, map));
   }
 
   // Emissive triangles of instanced meshes, carried into the world (an affine map keeps a
@@ -164,14 +167,13 @@ LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
       const Vec3 normal = inst.to_world.normal(triangle_normal(t));
       if (!(area > 0.f) || !(dot(normal, normal) > 0.f)) continue;
       const TextureImage* map = m.maps.emission.get();
-      if (map != nullptr && !mean_of_map.contains(map)) mean_of_map[map] = mean_luminance(*map);
       const std::uint32_t id = g.size() + inst.first_prim_offset + local;
       m_light_of_instanced[id] = static_cast<std::int32_t>(m_lights.size());
       Entry e{Kind::kInstancedTriangle, id, area, radiance, map};
       e.instanced = static_cast<std::uint32_t>(m_instanced.size());
       m_instanced.push_back({world, normalize(normal), inst.prototype, local});
       m_lights.push_back(e);
-      power.push_back(luminance(radiance) * area * kPi * (map != nullptr ? mean_of_map[map] : 1.f));
+      power.push_back(emitter_power(radiance, area, map));
     }
   }
 
