@@ -31,8 +31,6 @@ namespace fs = std::filesystem;
 using json = nlohmann::json;
 using Bytes = std::vector<unsigned char>;
 
-constexpr int kFloat = 5126;
-
 using test::base64;
 
 /// A 1 x 1 8-bit RGB PNG holding the texel (r, g, b), as a data: URI.
@@ -54,23 +52,14 @@ double srgb8(int s) {
 /// A glTF document of one triangle that carries two sets of texture coordinates, with
 /// TEXCOORD_0 = (0,0) (1,0) (0,1) and TEXCOORD_1 = (0.25,0.25) (0.75,0.25) (0.25,0.75), all under
 /// material 0; the caller adds the materials, textures and images.
-class MapsDoc {
+class MapsDoc : public test::GltfDoc {
  public:
   MapsDoc() {
-    j["asset"] = {{"version", "2.0"}};
-    j["bufferViews"] = json::array();
-    j["accessors"] = json::array();
-    j["materials"] = json::array();
-    j["textures"] = json::array();
-    j["images"] = json::array();
-    const int position = add_floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);
-    const int uv0 = add_floats({0, 0, 1, 0, 0, 1}, "VEC2", 2);
-    const int uv1 = add_floats({0.25f, 0.25f, 0.75f, 0.25f, 0.25f, 0.75f}, "VEC2", 2);
-    j["meshes"] =
-        json::array({{{"primitives",
-                       json::array({{{"attributes", {{"POSITION", position}, {"TEXCOORD_0", uv0}, {"TEXCOORD_1", uv1}}},
-                                     {"material", 0}}})}}});
-    j["nodes"] = json::array({{{"mesh", 0}}});
+    const int position = add_floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, 3);
+    const int uv0 = add_floats({0, 0, 1, 0, 0, 1}, 2);
+    const int uv1 = add_floats({0.25f, 0.25f, 0.75f, 0.25f, 0.25f, 0.75f}, 2);
+    add_node({{"mesh", add_mesh({{"attributes", {{"POSITION", position}, {"TEXCOORD_0", uv0}, {"TEXCOORD_1", uv1}}},
+                                 {"material", 0}})}});
   }
 
   /// Adds a 1 x 1 image of texel (r, g, b) and a texture reading it; returns the texture index.
@@ -79,43 +68,18 @@ class MapsDoc {
     j["textures"].push_back({{"source", j["images"].size() - 1}});
     return static_cast<int>(j["textures"].size()) - 1;
   }
-
-  /// The .gltf text, the buffer as a base64 data: URI.
-  std::string text() const {
-    json doc = j;
-    doc["buffers"] =
-        json::array({{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}});
-    return doc.dump();
-  }
-
-  json j;
-
- private:
-  int add_floats(const std::vector<float>& values, const char* type, std::size_t components) {
-    Bytes data(values.size() * 4);
-    std::memcpy(data.data(), values.data(), data.size());
-    j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", data.size()}});
-    bin.insert(bin.end(), data.begin(), data.end());
-    j["accessors"].push_back({{"bufferView", j["bufferViews"].size() - 1},
-                              {"componentType", kFloat},
-                              {"count", values.size() / components},
-                              {"type", type}});
-    return static_cast<int>(j["accessors"].size()) - 1;
-  }
-
-  Bytes bin;
 };
 
 class GltfMaps : public ::testing::Test {
  protected:
-  void load(const MapsDoc& doc) {
-    m_path = test::write_text(m_tmp.path() / "maps.gltf", doc.text());
+  void load(MapsDoc& doc) {
+    m_path = test::write_text(m_tmp.path() / "maps.gltf", doc.gltf_text());
     load_gltf(m_path, m_scene);
   }
 
   /// Loads `doc`, which must fail with an InputError naming the file and containing `fragment`.
-  void expect_refused(const MapsDoc& doc, const std::string& fragment) {
-    m_path = test::write_text(m_tmp.path() / "maps.gltf", doc.text());
+  void expect_refused(MapsDoc& doc, const std::string& fragment) {
+    m_path = test::write_text(m_tmp.path() / "maps.gltf", doc.gltf_text());
     Scene scene;
     try {
       load_gltf(m_path, scene);
