@@ -15,6 +15,7 @@
 #include <optional>
 #include <sstream>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "raylab/core/error.h"
@@ -469,7 +470,7 @@ class ObjMaterials {
     const std::string path =
         resolve_reference(name, in, at, "texture", "; material '" + m.name + "' renders without it");
     if (path.empty()) return nullptr;
-    const std::string key = canonical_key(path) + (encoding == TextureEncoding::kLinear ? "\n(linear)" : "");
+    const std::pair<std::string, TextureEncoding> key{canonical_key(path), encoding};
     if (const auto it = m_textures.find(key); it != m_textures.end()) return it->second;
     try {
       return m_textures[key] = load_texture(path, encoding);
@@ -487,7 +488,8 @@ class ObjMaterials {
   std::map<std::string, int> m_map;
   std::map<std::string, MtlBlock> m_blocks;
   std::vector<std::optional<std::uint32_t>> m_objects;
-  std::map<std::string, std::shared_ptr<const TextureImage>> m_textures;
+  // By file and encoding: one image may serve as colour (sRGB) and as data (linear).
+  std::map<std::pair<std::string, TextureEncoding>, std::shared_ptr<const TextureImage>> m_textures;
 };
 
 // Parses `text` (the OBJ file `path`) with tinyobjloader, handing it `materials` when given.

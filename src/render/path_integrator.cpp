@@ -146,9 +146,7 @@ Color PathIntegrator::radiance(const TraceContext& ctx, const Ray& camera_ray, S
     const Material& material = scene.materials[scene.objects[si.object_id].material];
 
     // Light emitted by the surface found: emitters emit on the side their normal points to.
-    const Color emitted = !si.front_face                        ? Color{0.f}
-                          : hit.prim_id < scene.geometry.size() ? m_lights.emitted(hit.prim_id, si.u, si.v)
-                                                                : emitted_radiance(material, si.u, si.v);
+    const Color emitted = si.front_face ? emitted_radiance(material, si.u, si.v) : Color{0.f};
     if (emitted.x > 0.f || emitted.y > 0.f || emitted.z > 0.f) {
       const float light_pdf =
           previous_delta ? 0.f : m_lights.emitter_pdf(previous_position, hit.prim_id, si.position, si.geometric_normal);

@@ -213,7 +213,7 @@ TEST(LightSamplerChi2, CylinderAndConePointsAreUniformInArea) {
 }
 
 // An emission map: a light sample's radiance is the map at the point sampled, the same as a ray
-// that hits that point sees (LightSampler::emitted at its surface coordinates), for triangles
+// that hits that point sees (emitted_radiance at its surface coordinates), for triangles
 // with texture coordinates, quads, disks, spheres and cones. A 2 x 2 map of distinct texels with
 // bilinear blending makes any mix-up of the two coordinates show.
 TEST(LightSamplerEmissionMap, SampledRadianceIsWhatARayToThePointSees) {
@@ -249,7 +249,7 @@ TEST(LightSamplerEmissionMap, SampledRadianceIsWhatARayToThePointSees) {
     ASSERT_TRUE(accel->intersect(ray, hit));
     ASSERT_NEAR(hit.t, ls->distance, 1e-3f * ls->distance);  // nothing stands between
     const SurfaceInteraction si = surface_at(s, ray, hit);
-    const Color seen = lights.emitted(hit.prim_id, si.u, si.v);
+    const Color seen = emitted_radiance(s.material_of(hit.prim_id), si.u, si.v);
     ASSERT_NEAR(ls->li.x, seen.x, 2e-3f) << "sample " << i << " prim " << hit.prim_id;
     ASSERT_NEAR(ls->li.y, seen.y, 2e-3f) << "sample " << i << " prim " << hit.prim_id;
     ASSERT_NEAR(ls->li.z, seen.z, 2e-3f) << "sample " << i << " prim " << hit.prim_id;

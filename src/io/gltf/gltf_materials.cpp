@@ -116,7 +116,6 @@ Material GltfReader::convert_material(int index) {
       map(pbr.metallicRoughnessTexture, "pbrMetallicRoughness.metallicRoughnessTexture", kLinear);
   out.maps.emission = map(in.emissiveTexture, "emissiveTexture", kSrgb);
   out.maps.normal = map(in.normalTexture, "normalTexture", kLinear);
-  if (!std::isfinite(in.normalTexture.scale)) fail(element + ".normalTexture", "scale must be a finite number");
   out.maps.normal_scale = static_cast<float>(in.normalTexture.scale);
   // KHR_materials_transmission's texture is a plain JSON object inside the extension.
   if (const auto it = in.extensions.find("KHR_materials_transmission");

@@ -122,10 +122,7 @@ LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
     const Color radiance = m.emission * m.emission_strength;
     if (!emits(radiance)) continue;
     const TextureImage* map = m.maps.emission.get();
-    if (m_light_of_prim.empty()) {
-      m_light_of_prim.assign(prims, -1);
-      m_emission_of_prim.assign(prims, Color{0.f});
-    }
+    if (m_light_of_prim.empty()) m_light_of_prim.assign(prims, -1);
     const ShapeRef ref = g.resolve(id);
     float area = 0.f;
     switch (ref.kind) {
@@ -145,10 +142,9 @@ LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
         area = cylinder_area(g.cylinders[ref.index]);
         break;
     }
-    m_emission_of_prim[id] = radiance;
     if (!(area > 0.f)) continue;
     m_light_of_prim[id] = static_cast<std::int32_t>(m_lights.size());
-    m_lights.push_back({Kind::kShape, id, area, radiance, map});
+    m_lights.push_back({Kind::kShape, id, area, radiance, map != nullptr ? &m : nullptr});
     power.push_back(emitter_power(radiance, area, map));
   }
 
@@ -169,7 +165,7 @@ LightSampler::LightSampler(const Scene& scene) : m_scene(scene) {
       const TextureImage* map = m.maps.emission.get();
       const std::uint32_t id = g.size() + inst.first_prim_offset + local;
       m_light_of_instanced[id] = static_cast<std::int32_t>(m_lights.size());
-      Entry e{Kind::kInstancedTriangle, id, area, radiance, map};
+      Entry e{Kind::kInstancedTriangle, id, area, radiance, map != nullptr ? &m : nullptr};
       e.instanced = static_cast<std::uint32_t>(m_instanced.size());
       m_instanced.push_back({world, normalize(normal), inst.prototype, local});
       m_lights.push_back(e);
@@ -327,7 +323,7 @@ std::optional<LightSample> LightSampler::sample(Vec3 p, float u_choice, Sample2 
   ls.pdf = area_pdf(p, at.position, at.normal, e.area, choice);
   if (!(ls.pdf > 0.f) || !std::isfinite(ls.pdf)) return std::nullopt;
   ls.li = e.radiance;
-  if (e.emission_map != nullptr) {
+  if (e.textured != nullptr) {
     Vec2 uv;
     if (e.kind == Kind::kInstancedTriangle) {
       // An affine map keeps barycentric coordinates: the world point's are the prototype's.
@@ -342,7 +338,7 @@ std::optional<LightSample> LightSampler::sample(Vec3 p, float u_choice, Sample2 
     } else {
       uv = surface_coordinates(m_scene.geometry, e.index, at);
     }
-    ls.li = ls.li * e.emission_map->sample(uv.x, uv.y);
+    ls.li = emitted_radiance(*e.textured, uv.x, uv.y);
   }
   return ls;
 }
@@ -357,14 +353,6 @@ float LightSampler::emitter_pdf(Vec3 from, std::uint32_t prim, Vec3 at, Vec3 nor
   if (light < 0) return 0.f;
   const auto entry = static_cast<std::size_t>(light);
   return area_pdf(from, at, normal, m_lights[entry].area, choice_probability(entry));
-}
-
-Color LightSampler::emitted(std::uint32_t prim, float u, float v) const {
-  if (prim >= m_emission_of_prim.size()) return Color{0.f};
-  const Color e = m_emission_of_prim[prim];
-  if (!emits(e)) return e;
-  const Material& m = m_scene.materials[m_scene.objects[m_scene.geometry.object_of(prim)].material];
-  return m.maps.emission ? e * m.maps.emission->sample(u, v) : e;
 }
 
 std::optional<LightShapeHit> LightSampler::hit_light_shape(const Ray& ray, float tmax) const {

@@ -73,10 +73,6 @@ class LightSampler {
   /// (normal `normal`) of emissive scene primitive `prim`; 0 when that primitive is not a light.
   float emitter_pdf(Vec3 from, std::uint32_t prim, Vec3 at, Vec3 normal) const;
 
-  /// The radiance emitted by scene primitive `prim` (0 when it is not emissive) on its front side,
-  /// at surface coordinates (u, v) (which matter only where its material has an emission map).
-  Color emitted(std::uint32_t prim, float u, float v) const;
-
   /// The nearest of the light shapes that are not geometry along `ray` before `tmax`.
   std::optional<LightShapeHit> hit_light_shape(const Ray& ray, float tmax) const;
   /// As emitter_pdf, for a point of light shape `light` (from hit_light_shape).
@@ -107,11 +103,11 @@ class LightSampler {
   };
   struct Entry {
     Kind kind;
-    std::uint32_t index;  // kPoint, kDirectional, kLight*: scene light; kShape: global primitive id
-    float area = 0.f;     // kShape, kLight*
-    Color radiance{0.f};  // kShape, kLight*: emitted radiance; kPoint, kDirectional: pi I
-    const TextureImage* emission_map = nullptr;  // kShape, kInstancedTriangle: multiplies `radiance`
-    std::uint32_t instanced = 0;                 // kInstancedTriangle: index in m_instanced
+    std::uint32_t index;                 // kPoint, kDirectional, kLight*: scene light; kShape: global primitive id
+    float area = 0.f;                    // kShape, kLight*
+    Color radiance{0.f};                 // kShape, kLight*: emitted radiance; kPoint, kDirectional: pi I
+    const Material* textured = nullptr;  // kShape, kInstancedTriangle: the material, when it has an emission map
+    std::uint32_t instanced = 0;         // kInstancedTriangle: index in m_instanced
   };
 
   // The solid-angle density of a point `at` (normal `normal`) of an area light of area `area`,
@@ -125,7 +121,6 @@ class LightSampler {
 
   std::optional<Distribution1D> m_choice;      // entries by power
   std::vector<std::int32_t> m_light_of_prim;   // entry of each flat primitive, -1 when not a light
-  std::vector<Color> m_emission_of_prim;       // emitted radiance of each flat primitive
   std::vector<InstancedTriangle> m_instanced;  // the instanced emitters' triangles
   std::unordered_map<std::uint32_t, std::int32_t> m_light_of_instanced;  // global id -> entry
   std::optional<EnvironmentLight> m_environment;
