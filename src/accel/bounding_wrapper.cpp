@@ -49,7 +49,7 @@ bool BoundingWrapper::admits(const Ray& ray) const {
       return ray_meets_ball(sphere, ray);
     case WrapMode::kBox: {
       float t_enter;
-      return intersect_box(box, ray.origin, safe_reciprocal(ray.direction), ray.tmin, ray.tmax * kSlabWiden, t_enter);
+      return intersect_box(box, ray.origin, safe_reciprocal(ray.direction), ray.tmin, widen_exit(ray.tmax), t_enter);
     }
     case WrapMode::kNone:
       break;

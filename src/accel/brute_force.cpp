@@ -52,6 +52,7 @@ bool BruteForce::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
 template class TraversalAccelerator<BruteForce>;
 
 void BruteForce::all_hits(const Ray& ray, std::vector<Hit>& hits) const {
+  if (!traceable_direction(ray.direction)) return;  // no ray (see traceable_direction)
   const WatertightRay wr(ray);
   const std::size_t first = hits.size();
   for (std::uint32_t id : m_ids) {

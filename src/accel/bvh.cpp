@@ -55,7 +55,7 @@ inline bool hit_node(const BvhNode& node, const BvhBoxRay& r, float tmin, float 
   t_far = tz1 < t_far ? tz1 : t_far;
   // Both limits are widened: a primitive lying in a box face can be hit at a distance that
   // rounds just below the box's computed entry, and just below the current closest hit.
-  t_far = (t_far < tmax ? t_far : tmax) * kSlabWiden;
+  t_far = widen_exit(t_far < tmax ? t_far : tmax);
   t_enter = t_near;
   return t_near <= t_far;
 }

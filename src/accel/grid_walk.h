@@ -28,7 +28,7 @@ inline bool clip_to_box(const Vec3& o, const Vec3& inv_d, const Box3& box, float
     t_in = t0 > t_in ? t0 : t_in;  // a NaN slab (0 * inf: origin in a face plane) is ignored
     t_out = t1 < t_out ? t1 : t_out;
   }
-  return t_in <= t_out * kSlabWiden;
+  return t_in <= widen_exit(t_out);
 }
 
 /// Clips `ray` to a grid's box: on return true, `t_in` is where the ray's range [tmin, tmax]

@@ -89,7 +89,7 @@ bool IrregularGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, MakeMailbox 
     t_in = t0 > t_in ? t0 : t_in;  // a NaN slab (0 * inf: origin in a face plane) is ignored
     t_out = t1 < t_out ? t1 : t_out;
   }
-  if (!(t_in <= t_out * kSlabWiden)) return finish_traversal<kCount>(false, ray.tmax, hit, counters, ray, hit, stats);
+  if (!(t_in <= widen_exit(t_out))) return finish_traversal<kCount>(false, ray.tmax, hit, counters, ray, hit, stats);
 
   // The entry voxel, from the entry point (clamped: rounding may put it just outside). A
   // component so small that its reciprocal overflows moves the ray across no plane within float

@@ -285,16 +285,8 @@ bool Octree::walk(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) c
   // The children's content boxes decide which children the ray enters at all: one 8-wide slab
   // test per interior node (the wide BVH's), conservative as the BVH's is.
   const WideBoxRay<8> box_ray(ray);
-  // That test widens exit distances as t * kSlabWiden, which narrows them below 0: a ray asking
-  // for hits behind its origin (tmin < 0, rare) enters every child that holds something instead.
-  const bool behind = tmin < 0.f;
   auto test_children = [&](const OctreeChildBoxes& boxes, Frame& g) {
-    if (!behind) {
-      g.enter = box_ray.test(boxes, tmin, tmax, g.t_enter);
-    } else {
-      g.enter = WideBoxRay<8>::occupied_slots(boxes);
-      std::fill(std::begin(g.t_enter), std::end(g.t_enter), -kInf);
-    }
+    g.enter = box_ray.test(boxes, tmin, tmax, g.t_enter);
   };
   open_frame(*f, nodes[0], kRootLatticeSteps, crossing, t_cur);
   test_children(m_tree.boxes[0], *f);
@@ -310,7 +302,7 @@ bool Octree::walk(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) c
     // Visit the current child of the innermost open node, unless the ray misses its content or,
     // since the node was opened, a hit closer than the content was found.
     const int actual = f->child ^ octant;
-    if (((f->enter >> actual) & 1) && (f->t_enter[actual] <= tmax * kSlabWiden || behind)) {
+    if (((f->enter >> actual) & 1) && f->t_enter[actual] <= widen_exit(tmax)) {
       const OctreeNode node = nodes[f->first_child + static_cast<std::uint32_t>(actual)];
       if constexpr (kCount) ++counters.nodes_visited;
       if (!node.is_leaf()) {

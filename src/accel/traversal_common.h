@@ -36,6 +36,26 @@ inline std::vector<Triangle> triangles_in_leaf_order(const Geometry& geometry,
 /// culled by rounding.
 inline constexpr float kSlabWiden = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 
+/// The mirror of kSlabWiden below 1 (exact in float: 1 - 3 * 2^-23), which widens a negative
+/// exit distance by the same relative amount.
+inline constexpr float kSlabNarrow = 2.0f - kSlabWiden;
+
+/// A box's exit distance `t_exit` moved outward by the slab test's rounding bound, for either
+/// sign: t * kSlabWiden alone would pull a negative exit (a box behind the origin, asked for by
+/// tmin < 0) toward the entry and cull a primitive lying in the exit face. For t >= 0 the result
+/// is t * kSlabWiden bit for bit, so rays with tmin >= 0 see no change. `T` is float or one of
+/// the SIMD float types (anything with `*` and `max`).
+template <class T>
+inline T widen_exit(const T& t_exit) {
+  if constexpr (std::is_same_v<T, float>) {
+    const float up = t_exit * kSlabWiden;
+    const float down = t_exit * kSlabNarrow;
+    return up > down ? up : down;  // NaN stays NaN
+  } else {
+    return max(t_exit * T::broadcast(kSlabWiden), t_exit * T::broadcast(kSlabNarrow));
+  }
+}
+
 /// Calls `f(std::integral_constant<int, octant>{})`, so a kernel can be instantiated once per
 /// octant with its near and far planes known at compile time.
 template <class F>
@@ -73,7 +93,7 @@ class TraversalStack {
   bool pop(float tmax, std::uint32_t& node) {
     while (m_size > 0) {
       const Entry& e = m_entries[--m_size];
-      if (kAnyHit || e.t_enter <= tmax * kSlabWiden) {  // widened as the box test is
+      if (kAnyHit || e.t_enter <= widen_exit(tmax)) {  // widened as the box test is
         node = e.node;
         return true;
       }

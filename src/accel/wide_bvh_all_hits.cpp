@@ -43,7 +43,7 @@ void collect_leaf_hits(const WideBvhLeaves& leaves, const Geometry& geometry, st
 
 template <int W>
 void WideBvh<W>::all_hits(const Ray& ray, std::vector<Hit>& hits) const {
-  if (m_tree.leaves.empty()) return;
+  if (m_tree.leaves.empty() || !traceable_direction(ray.direction)) return;  // nothing, or no ray
   const std::size_t first = hits.size();
   const WideBoxRay<W> box_ray(ray);
   const WatertightRay tri_ray(ray);

@@ -131,7 +131,7 @@ struct WideBoxRay {
   }
 
   /// Bit mask of the children of `node` that the ray enters within [tmin, tmax] (the exit
-  /// widened by kSlabWiden), and their entry distances in `t_enter`. `Node` is a WideBvhNode<W>
+  /// widened by widen_exit), and their entry distances in `t_enter`. `Node` is a WideBvhNode<W>
   /// or another node whose boxes lie as its do (the octree's OctreeChildBoxes for W = 8).
   template <class Node>
   unsigned test(const Node& node, float tmin, float tmax, float* t_enter) const {
@@ -145,8 +145,7 @@ struct WideBoxRay {
     const F t_near = max(tz0, max(ty0, max(tx0, F::broadcast(tmin))));
     // Widened after the closest-hit limit too: a primitive in a box face can be hit at a
     // distance that rounds just below the box's computed entry and the current closest hit.
-    const F t_far =
-        min(min(tz1, min(ty1, min(tx1, F::broadcast(INFINITY)))), F::broadcast(tmax)) * F::broadcast(kSlabWiden);
+    const F t_far = widen_exit(min(min(tz1, min(ty1, min(tx1, F::broadcast(INFINITY)))), F::broadcast(tmax)));
     t_near.store(t_enter);
     return static_cast<unsigned>(less_equal_mask(t_near, t_far)) & occupied_slots(node);
   }

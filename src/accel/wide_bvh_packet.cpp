@@ -52,7 +52,7 @@ struct PacketInterval {
       t_near = max(min(d_near * inv_lo[a], d_near * inv_hi[a]), t_near);
       t_far = min(max(d_far * inv_lo[a], d_far * inv_hi[a]), t_far);
     }
-    t_far = min(t_far, F::broadcast(tmax)) * F::broadcast(kSlabWiden);
+    t_far = widen_exit(min(t_far, F::broadcast(tmax)));
     t_near.store(t_enter);
     return static_cast<unsigned>(less_equal_mask(t_near, t_far));
   }
@@ -178,8 +178,9 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
     if (i >= n) continue;
     best[i] = kAnyHit ? Hit{} : hits[i];
     tmin_lo = std::min(tmin_lo, r.tmin);
-    // A ray with an empty or NaN interval takes no part (the single-ray walk would find nothing).
-    if (r.tmin <= r.tmax) alive |= 1u << i;
+    // A ray with an empty or NaN interval, or no traceable direction, takes no part (the
+    // single-ray entry points answer it with a miss too).
+    if (r.tmin <= r.tmax && traceable_direction(r.direction)) alive |= 1u << i;
   }
   const PacketInterval<W> interval = packet_interval<W, kOctant>(origin, inv, tmin_lo);
   const bool coherent = !kAnyHit && interval.valid && directions_coherent(rays, n);
@@ -207,7 +208,7 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
       t_near = max(t0, t_near);
       t_far = min(t1, t_far);
     }
-    t_far = min(t_far, L::load(tmax + o)) * L::broadcast(kSlabWiden);
+    t_far = widen_exit(min(t_far, L::load(tmax + o)));
     if (t_enter != nullptr) t_near.store(t_enter);
     return static_cast<std::uint32_t>(less_equal_mask(t_near, t_far)) << o;
   };
@@ -281,8 +282,8 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
     if constexpr (!kAnyHit) {
       std::uint32_t still = 0;
       for (int g = 0; g < kGroups; ++g) {
-        still |= static_cast<std::uint32_t>(less_equal_mask(L::broadcast(current.node.t),
-                                                            L::load(tmax + g * kRayLanes) * L::broadcast(kSlabWiden)))
+        still |= static_cast<std::uint32_t>(
+                     less_equal_mask(L::broadcast(current.node.t), widen_exit(L::load(tmax + g * kRayLanes))))
                  << (g * kRayLanes);
       }
       active &= still;

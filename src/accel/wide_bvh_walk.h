@@ -69,7 +69,7 @@ bool walk_wide_bvh(const WideBvhTree<W>& tree, const Geometry& geometry, WideSta
     for (;;) {
       if (size == 0) return found;
       current = stack[--size];
-      if (kAnyHit || current.t <= tmax * kSlabWiden) break;  // widened as the box test is
+      if (kAnyHit || current.t <= widen_exit(tmax)) break;  // widened as the box test is
     }
   }
 }

@@ -423,7 +423,8 @@ unsigned entered_mask(const WideBvhNode<W>& node, const Ray& ray) {
       t_near = t0 > t_near ? t0 : t_near;
       t_far = t1 < t_far ? t1 : t_far;
     }
-    t_far = (t_far < ray.tmax ? t_far : ray.tmax) * kSlabWiden;
+    t_far = t_far < ray.tmax ? t_far : ray.tmax;
+    t_far = std::max(t_far * kSlabWiden, t_far * (2.0f - kSlabWiden));  // away from zero for either sign
     mask |= (t_near <= t_far ? 1u : 0u) << i;
   }
   return mask;
@@ -1043,8 +1044,8 @@ TYPED_TEST(WideBvhTest, LeavesListingOtherKinds) {
 }
 
 // Rays with NaN, infinite or zero components (in the direction or the origin): every query
-// answers as brute force does, bit for bit; one with a NaN component or a zero direction hits
-// nothing (an infinite axis-aligned direction may hit at t = 0, as brute force says). Run in a
+// answers as brute force does, bit for bit; one with a NaN component or a direction that is not
+// finite and non-zero hits nothing (see traceable_direction in raylab/core/ray.h). Run in a
 // child process so that a traversal that goes round in circles or runs off its stack fails this
 // test instead of ending the whole test program.
 std::vector<Ray> non_finite_rays() {
@@ -1085,7 +1086,8 @@ int non_finite_queries(const Geometry& g) {
     const bool hit_b = brute.intersect(rb, hb), occ_b = brute.occluded(ray);
     const bool must_miss = std::isnan(ray.origin.x) || std::isnan(ray.origin.y) || std::isnan(ray.origin.z) ||
                            std::isnan(ray.direction.x) || std::isnan(ray.direction.y) || std::isnan(ray.direction.z) ||
-                           ray.direction == Vec3(0.f);
+                           ray.direction == Vec3(0.f) || std::isinf(ray.direction.x) || std::isinf(ray.direction.y) ||
+                           std::isinf(ray.direction.z);
     if (hit != hit_b || hit_c != hit || occ != occ_b || occ_c != occ || !same_bits(h, hb) || !same_bits(hc, hb) ||
         !same_bits(r, rb) || (must_miss && (hit || occ))) {
       std::fprintf(stderr, "differs from brute force (%d %d, %d %d) for ray %s\n", hit, hit_b, occ, occ_b,

@@ -2,6 +2,8 @@
 /// \file
 /// Rays and hit records shared by every accelerator.
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -32,6 +34,24 @@ static_assert(sizeof(Ray) == 32, "Ray must match the .rays record layout");
 /// which rays can share a packet.
 inline int direction_octant(Vec3 d) {
   return (std::signbit(d.x) ? 1 : 0) | (std::signbit(d.y) ? 2 : 0) | (std::signbit(d.z) ? 4 : 0);
+}
+
+/// Whether a ray can be traced along `d`: every component finite and not all zero. A ray whose
+/// direction is not (a NaN, an infinite component, or zero) is no ray: every accelerator answers
+/// it with a miss, closest-hit, any-hit, packet and all-hits queries alike. An infinite component
+/// has no useful limit (every distance along it rounds to t = +-0, behind the origin as well as
+/// ahead), and Embree takes such rays as invalid (its `EMBREE_IGNORE_INVALID_RAYS` build misses
+/// them too).
+inline bool traceable_direction(Vec3 d) {
+  // On the magnitudes' bit patterns, which order as the magnitudes do and put inf and every NaN
+  // above the finite floats: the largest must be neither zero nor inf or NaN. Integer work only,
+  // no branch: this runs once per ray on every query.
+  constexpr std::uint32_t kMagnitude = 0x7fffffffu, kInfinity = 0x7f800000u;
+  const std::uint32_t x = std::bit_cast<std::uint32_t>(d.x) & kMagnitude;
+  const std::uint32_t y = std::bit_cast<std::uint32_t>(d.y) & kMagnitude;
+  const std::uint32_t z = std::bit_cast<std::uint32_t>(d.z) & kMagnitude;
+  const std::uint32_t largest = std::max(x, std::max(y, z));
+  return largest - 1u < kInfinity - 1u;  // 0 wraps round to the top
 }
 
 /// The closest (or any) hit found by an accelerator: what traversal knows, nothing more. Shading
