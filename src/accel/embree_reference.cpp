@@ -160,6 +160,8 @@ struct EmbreeReference::State {
   std::vector<unsigned> indices;
   UserShapes user;
   std::size_t user_count = 0;
+  std::vector<RTCRayHit> prepared;  // prepare(): the records as converted
+  std::vector<RTCRayHit> work;      // what the prepared traces consume
 
   RTCScene build(RTCSceneFlags flags) const {
     RTCScene s = rtcNewScene(device);
@@ -276,6 +278,45 @@ void EmbreeReference::occluded1(std::span<const Ray> rays, std::span<std::uint8_
     rtcOccluded1(scene, &context, &r);
     occluded[i] = r.tfar == -kInf ? 1 : 0;
   }
+}
+
+void EmbreeReference::prepare(std::span<const Ray> rays) {
+  m->prepared.resize(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    m->prepared[i].ray = embree_ray(rays[i]);
+    m->prepared[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    m->prepared[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  }
+  m->work = m->prepared;
+}
+
+void EmbreeReference::reset_prepared(std::size_t begin, std::size_t end) const {
+  std::copy(m->prepared.begin() + static_cast<std::ptrdiff_t>(begin),
+            m->prepared.begin() + static_cast<std::ptrdiff_t>(end),
+            m->work.begin() + static_cast<std::ptrdiff_t>(begin));
+}
+
+void EmbreeReference::intersect1_prepared(std::size_t begin, std::size_t end) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  for (std::size_t i = begin; i < end; ++i) rtcIntersect1(m->scene, &context, &m->work[i]);
+}
+
+void EmbreeReference::occluded1_prepared(std::size_t begin, std::size_t end) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  for (std::size_t i = begin; i < end; ++i) rtcOccluded1(m->scene, &context, &m->work[i].ray);
+}
+
+void EmbreeReference::prepared_hits(std::span<Hit> hits) const {
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    const RTCRayHit& rh = m->work[i];
+    hits[i] = m->hit_of(rh.hit.geomID, rh.hit.primID, rh.ray.tfar, rh.hit.u, rh.hit.v);
+  }
+}
+
+void EmbreeReference::prepared_occluded(std::span<std::uint8_t> occluded) const {
+  for (std::size_t i = 0; i < occluded.size(); ++i) occluded[i] = m->work[i].ray.tfar == -kInf ? 1 : 0;
 }
 
 namespace {
@@ -413,6 +454,12 @@ void EmbreeReference::build_robust() {}
 void EmbreeReference::intersect1(std::span<const Ray>, std::span<Hit>, bool) const {}
 void EmbreeReference::occluded1(std::span<const Ray>, std::span<std::uint8_t>, bool) const {}
 void EmbreeReference::intersect16(std::span<const Ray>, std::span<Hit>) const {}
+void EmbreeReference::prepare(std::span<const Ray>) {}
+void EmbreeReference::reset_prepared(std::size_t, std::size_t) const {}
+void EmbreeReference::intersect1_prepared(std::size_t, std::size_t) const {}
+void EmbreeReference::occluded1_prepared(std::size_t, std::size_t) const {}
+void EmbreeReference::prepared_hits(std::span<Hit>) const {}
+void EmbreeReference::prepared_occluded(std::span<std::uint8_t>) const {}
 void EmbreeReference::occluded16(std::span<const Ray>, std::span<std::uint8_t>) const {}
 double EmbreeReference::binary_sah_cost(const BvhConfig&) const { return 0.0; }
 

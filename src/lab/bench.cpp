@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -215,13 +216,17 @@ BenchAgreement check_any(const Accelerator& ours_accel, std::span<const Ray> ray
 }
 
 // Median seconds of `repeats` runs of `ours` and, when given, `embree`, alternating: interleaving
-// spreads clock, thermal and neighbour-load drift over both sides.
-template <class A, class B>
-std::pair<double, double> time_interleaved(int repeats, bool with_embree, const A& ours, const B& embree) {
+// spreads clock, thermal and neighbour-load drift over both sides. `before_embree` runs before
+// each Embree run, outside the clock.
+template <class A, class B, class R>
+std::pair<double, double> time_interleaved(int repeats, bool with_embree, const A& ours, const B& embree,
+                                           const R& before_embree) {
   std::vector<double> a, b;
   for (int r = 0; r < repeats; ++r) {
     a.push_back(seconds_of(ours));
-    if (with_embree) b.push_back(seconds_of(embree));
+    if (!with_embree) continue;
+    before_embree();
+    b.push_back(seconds_of(embree));
   }
   return {detail::median(a), detail::median(b)};
 }
@@ -286,12 +291,29 @@ class SetRun {
     return s;
   }
 
-  // Median Mrays/s of both sides, interleaved.
+  // Median Mrays/s of both sides, interleaved. Embree's single rays are traced from records
+  // prepared before the clock, as ours are from a prepared array of Ray (docs/performance.md:
+  // filling each record just before its call costs Embree up to 1.7x); its packets are still
+  // filled per packet inside the timing.
   BenchFigure time(Way way, int repeats) {
     const int slot = way == Way::kSingle ? 0 : 1;
+    const bool prepared = m_ref != nullptr && way == Way::kSingle;
+    if (prepared) m_ref->prepare(m_spec.rays);
+    const std::size_t n = m_spec.rays.size();
     const auto [ours, embree] = time_interleaved(
-        repeats, m_ref != nullptr, [&] { run(slot, way); }, [&] { run(slot + 2, way); });
-    return {mrays(m_spec.rays.size(), ours), m_ref ? mrays(m_spec.rays.size(), embree) : 0.0};
+        repeats, m_ref != nullptr, [&] { run(slot, way); },
+        [&] {
+          if (!prepared) return run(slot + 2, way);
+          parallel_chunks(n, m_threads, [&](std::size_t b, std::size_t e) {
+            if (m_spec.closest) return m_ref->intersect1_prepared(b, e);
+            m_ref->occluded1_prepared(b, e);
+          });
+        },
+        [&] {
+          if (prepared) m_ref->reset_prepared(0, n);
+        });
+    if (prepared) check_prepared_answers();
+    return {mrays(n, ours), m_ref ? mrays(n, embree) : 0.0};
   }
 
   // Our closest hits from the single-ray pass, or for any-hit rays a closest-hit pass now.
@@ -304,6 +326,30 @@ class SetRun {
 
  private:
   // Slots: 0 ours single, 1 ours packets, 2 Embree single, 3 Embree packets.
+  // The prepared records must give what intersect1 / occluded1 gave in verify(): the same
+  // records on the same scene, so any difference is a fault of the timing path.
+  void check_prepared_answers() const {
+    const std::size_t n = m_spec.rays.size();
+    std::size_t differ = 0;
+    if (m_spec.closest) {
+      std::vector<Hit> hits(n);
+      m_ref->prepared_hits(hits);
+      for (std::size_t i = 0; i < n; ++i) {
+        const Hit &a = hits[i], &b = m_hits[2][i];
+        differ +=
+            a.prim_id != b.prim_id || std::bit_cast<std::uint32_t>(a.t) != std::bit_cast<std::uint32_t>(b.t) ? 1 : 0;
+      }
+    } else {
+      std::vector<std::uint8_t> flags(n);
+      m_ref->prepared_occluded(flags);
+      for (std::size_t i = 0; i < n; ++i) differ += flags[i] != m_flags[2][i] ? 1 : 0;
+    }
+    if (differ != 0) {
+      throw std::logic_error("bench: Embree's prepared single rays answered " + std::to_string(differ) + " of the " +
+                             m_spec.name + " rays otherwise than its per-ray loop");
+    }
+  }
+
   void run(int slot, Way way) {
     const bool embree = slot >= 2;
     if (m_spec.closest) {

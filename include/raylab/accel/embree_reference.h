@@ -66,6 +66,22 @@ class EmbreeReference {
   void intersect1(std::span<const Ray> rays, std::span<Hit> hits, bool robust = false) const;
   /// Any hit, one rtcOccluded1 per ray: `occluded[i]` is 1 or 0.
   void occluded1(std::span<const Ray> rays, std::span<std::uint8_t> occluded, bool robust = false) const;
+  /// Converts `rays` into Embree's own records ahead of time (replacing any earlier set), for the
+  /// loop a user runs whose rays are already in Embree's layout: filling each record just before
+  /// its call costs Embree up to 1.7x (docs/performance.md), which our side, reading a prepared
+  /// array of Ray, does not pay. The prepared traces below then time Embree alone.
+  void prepare(std::span<const Ray> rays);
+  /// Restores the prepared records [begin, end) that a trace consumed (tfar and the hit are
+  /// written); to be called outside the clock.
+  void reset_prepared(std::size_t begin, std::size_t end) const;
+  /// One rtcIntersect1 per prepared record in [begin, end), nothing else.
+  void intersect1_prepared(std::size_t begin, std::size_t end) const;
+  /// One rtcOccluded1 per prepared record in [begin, end), nothing else.
+  void occluded1_prepared(std::size_t begin, std::size_t end) const;
+  /// The answers of the last prepared closest-hit trace, as intersect1 gives them.
+  void prepared_hits(std::span<Hit> hits) const;
+  /// The answers of the last prepared any-hit trace, as occluded1 gives them.
+  void prepared_occluded(std::span<std::uint8_t> occluded) const;
   /// Closest hits by rtcIntersect16 with a coherent context, 16 consecutive rays per packet (the
   /// last packet masked); same answers as intersect1.
   void intersect16(std::span<const Ray> rays, std::span<Hit> hits) const;
