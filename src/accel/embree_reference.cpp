@@ -162,6 +162,12 @@ struct EmbreeReference::State {
   std::size_t user_count = 0;
   std::vector<RTCRayHit> prepared;  // prepare(): the records as converted
   std::vector<RTCRayHit> work;      // what the prepared traces consume
+  struct alignas(64) Valid16 {      // Embree may load a packet's mask as one 64-byte vector
+    int lane[16];
+  };
+  std::vector<RTCRayHit16> prepared16;  // prepare(rays, true): packets of 16 consecutive rays
+  std::vector<RTCRayHit16> work16;
+  std::vector<Valid16> valid16;
 
   RTCScene build(RTCSceneFlags flags) const {
     RTCScene s = rtcNewScene(device);
@@ -280,45 +286,6 @@ void EmbreeReference::occluded1(std::span<const Ray> rays, std::span<std::uint8_
   }
 }
 
-void EmbreeReference::prepare(std::span<const Ray> rays) {
-  m->prepared.resize(rays.size());
-  for (std::size_t i = 0; i < rays.size(); ++i) {
-    m->prepared[i].ray = embree_ray(rays[i]);
-    m->prepared[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    m->prepared[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  }
-  m->work = m->prepared;
-}
-
-void EmbreeReference::reset_prepared(std::size_t begin, std::size_t end) const {
-  std::copy(m->prepared.begin() + static_cast<std::ptrdiff_t>(begin),
-            m->prepared.begin() + static_cast<std::ptrdiff_t>(end),
-            m->work.begin() + static_cast<std::ptrdiff_t>(begin));
-}
-
-void EmbreeReference::intersect1_prepared(std::size_t begin, std::size_t end) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  for (std::size_t i = begin; i < end; ++i) rtcIntersect1(m->scene, &context, &m->work[i]);
-}
-
-void EmbreeReference::occluded1_prepared(std::size_t begin, std::size_t end) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  for (std::size_t i = begin; i < end; ++i) rtcOccluded1(m->scene, &context, &m->work[i].ray);
-}
-
-void EmbreeReference::prepared_hits(std::span<Hit> hits) const {
-  for (std::size_t i = 0; i < hits.size(); ++i) {
-    const RTCRayHit& rh = m->work[i];
-    hits[i] = m->hit_of(rh.hit.geomID, rh.hit.primID, rh.ray.tfar, rh.hit.u, rh.hit.v);
-  }
-}
-
-void EmbreeReference::prepared_occluded(std::span<std::uint8_t> occluded) const {
-  for (std::size_t i = 0; i < occluded.size(); ++i) occluded[i] = m->work[i].ray.tfar == -kInf ? 1 : 0;
-}
-
 namespace {
 
 // Loads up to 16 rays into an Embree SoA packet; returns the valid mask (-1 valid, 0 not).
@@ -353,6 +320,89 @@ void for_each_packet16(std::span<const Ray> rays, RaysOf rays_of, Trace trace) {
 }
 
 }  // namespace
+
+void EmbreeReference::prepare(std::span<const Ray> rays, bool packets) {
+  m->prepared.clear(), m->work.clear(), m->prepared16.clear(), m->work16.clear(), m->valid16.clear();
+  if (packets) {
+    for (std::size_t b = 0; b < rays.size(); b += 16) {
+      RTCRayHit16& rh = m->prepared16.emplace_back();
+      State::Valid16& valid = m->valid16.emplace_back();
+      load_packet(rays.subspan(b, std::min<std::size_t>(16, rays.size() - b)), rh.ray, valid.lane);
+      for (int k = 0; k < 16; ++k) rh.hit.geomID[k] = rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+    }
+    m->work16 = m->prepared16;
+    return;
+  }
+  m->prepared.resize(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    m->prepared[i].ray = embree_ray(rays[i]);
+    m->prepared[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    m->prepared[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  }
+  m->work = m->prepared;
+}
+
+void EmbreeReference::reset_prepared(std::size_t begin, std::size_t end) const {
+  if (!m->prepared16.empty()) {
+    std::copy(m->prepared16.begin() + static_cast<std::ptrdiff_t>(begin / 16),
+              m->prepared16.begin() + static_cast<std::ptrdiff_t>((end + 15) / 16),
+              m->work16.begin() + static_cast<std::ptrdiff_t>(begin / 16));
+    return;
+  }
+  std::copy(m->prepared.begin() + static_cast<std::ptrdiff_t>(begin),
+            m->prepared.begin() + static_cast<std::ptrdiff_t>(end),
+            m->work.begin() + static_cast<std::ptrdiff_t>(begin));
+}
+
+void EmbreeReference::intersect1_prepared(std::size_t begin, std::size_t end) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  for (std::size_t i = begin; i < end; ++i) rtcIntersect1(m->scene, &context, &m->work[i]);
+}
+
+void EmbreeReference::occluded1_prepared(std::size_t begin, std::size_t end) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  for (std::size_t i = begin; i < end; ++i) rtcOccluded1(m->scene, &context, &m->work[i].ray);
+}
+
+void EmbreeReference::intersect16_prepared(std::size_t begin, std::size_t end) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  for (std::size_t p = begin / 16; p < (end + 15) / 16; ++p) {
+    rtcIntersect16(m->valid16[p].lane, m->scene, &context, &m->work16[p]);
+  }
+}
+
+void EmbreeReference::occluded16_prepared(std::size_t begin, std::size_t end) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  for (std::size_t p = begin / 16; p < (end + 15) / 16; ++p) {
+    rtcOccluded16(m->valid16[p].lane, m->scene, &context, &m->work16[p].ray);
+  }
+}
+
+void EmbreeReference::prepared_hits(std::span<Hit> hits) const {
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    if (!m->work16.empty()) {
+      const RTCRayHit16& rh = m->work16[i / 16];
+      const std::size_t k = i % 16;
+      hits[i] = m->hit_of(rh.hit.geomID[k], rh.hit.primID[k], rh.ray.tfar[k], rh.hit.u[k], rh.hit.v[k]);
+      continue;
+    }
+    const RTCRayHit& rh = m->work[i];
+    hits[i] = m->hit_of(rh.hit.geomID, rh.hit.primID, rh.ray.tfar, rh.hit.u, rh.hit.v);
+  }
+}
+
+void EmbreeReference::prepared_occluded(std::span<std::uint8_t> occluded) const {
+  for (std::size_t i = 0; i < occluded.size(); ++i) {
+    const float tfar = m->work16.empty() ? m->work[i].ray.tfar : m->work16[i / 16].ray.tfar[i % 16];
+    occluded[i] = tfar == -kInf ? 1 : 0;
+  }
+}
 
 void EmbreeReference::intersect16(std::span<const Ray> rays, std::span<Hit> hits) const {
   for_each_packet16<RTCRayHit16>(
@@ -454,7 +504,9 @@ void EmbreeReference::build_robust() {}
 void EmbreeReference::intersect1(std::span<const Ray>, std::span<Hit>, bool) const {}
 void EmbreeReference::occluded1(std::span<const Ray>, std::span<std::uint8_t>, bool) const {}
 void EmbreeReference::intersect16(std::span<const Ray>, std::span<Hit>) const {}
-void EmbreeReference::prepare(std::span<const Ray>) {}
+void EmbreeReference::prepare(std::span<const Ray>, bool) {}
+void EmbreeReference::intersect16_prepared(std::size_t, std::size_t) const {}
+void EmbreeReference::occluded16_prepared(std::size_t, std::size_t) const {}
 void EmbreeReference::reset_prepared(std::size_t, std::size_t) const {}
 void EmbreeReference::intersect1_prepared(std::size_t, std::size_t) const {}
 void EmbreeReference::occluded1_prepared(std::size_t, std::size_t) const {}

@@ -291,28 +291,26 @@ class SetRun {
     return s;
   }
 
-  // Median Mrays/s of both sides, interleaved. Embree's single rays are traced from records
+  // Median Mrays/s of both sides, interleaved. Embree traces records (single or packets of 16)
   // prepared before the clock, as ours are from a prepared array of Ray (docs/performance.md:
-  // filling each record just before its call costs Embree up to 1.7x); its packets are still
-  // filled per packet inside the timing.
+  // filling each record just before its call costs Embree up to 1.7x); the records it consumed
+  // are restored outside the clock, and its answers checked afterwards.
   BenchFigure time(Way way, int repeats) {
     const int slot = way == Way::kSingle ? 0 : 1;
-    const bool prepared = m_ref != nullptr && way == Way::kSingle;
-    if (prepared) m_ref->prepare(m_spec.rays);
+    const bool packets = way == Way::kPacket;
+    if (m_ref) m_ref->prepare(m_spec.rays, packets);
     const std::size_t n = m_spec.rays.size();
     const auto [ours, embree] = time_interleaved(
         repeats, m_ref != nullptr, [&] { run(slot, way); },
         [&] {
-          if (!prepared) return run(slot + 2, way);
+          // kChunk is a multiple of 16: each chunk starts a packet.
           parallel_chunks(n, m_threads, [&](std::size_t b, std::size_t e) {
-            if (m_spec.closest) return m_ref->intersect1_prepared(b, e);
-            m_ref->occluded1_prepared(b, e);
+            if (m_spec.closest) return packets ? m_ref->intersect16_prepared(b, e) : m_ref->intersect1_prepared(b, e);
+            packets ? m_ref->occluded16_prepared(b, e) : m_ref->occluded1_prepared(b, e);
           });
         },
-        [&] {
-          if (prepared) m_ref->reset_prepared(0, n);
-        });
-    if (prepared) check_prepared_answers();
+        [&] { m_ref->reset_prepared(0, n); });
+    if (m_ref) check_prepared_answers(slot + 2);
     return {mrays(n, ours), m_ref ? mrays(n, embree) : 0.0};
   }
 
@@ -326,27 +324,27 @@ class SetRun {
 
  private:
   // Slots: 0 ours single, 1 ours packets, 2 Embree single, 3 Embree packets.
-  // The prepared records must give what intersect1 / occluded1 gave in verify(): the same
-  // records on the same scene, so any difference is a fault of the timing path.
-  void check_prepared_answers() const {
+  // The prepared records must give what the same way gave in verify() (answers in `slot`): the
+  // same records on the same scene, so any difference is a fault of the timing path.
+  void check_prepared_answers(int slot) const {
     const std::size_t n = m_spec.rays.size();
     std::size_t differ = 0;
     if (m_spec.closest) {
       std::vector<Hit> hits(n);
       m_ref->prepared_hits(hits);
       for (std::size_t i = 0; i < n; ++i) {
-        const Hit &a = hits[i], &b = m_hits[2][i];
+        const Hit &a = hits[i], &b = m_hits[slot][i];
         differ +=
             a.prim_id != b.prim_id || std::bit_cast<std::uint32_t>(a.t) != std::bit_cast<std::uint32_t>(b.t) ? 1 : 0;
       }
     } else {
       std::vector<std::uint8_t> flags(n);
       m_ref->prepared_occluded(flags);
-      for (std::size_t i = 0; i < n; ++i) differ += flags[i] != m_flags[2][i] ? 1 : 0;
+      for (std::size_t i = 0; i < n; ++i) differ += flags[i] != m_flags[slot][i] ? 1 : 0;
     }
     if (differ != 0) {
-      throw std::logic_error("bench: Embree's prepared single rays answered " + std::to_string(differ) + " of the " +
-                             m_spec.name + " rays otherwise than its per-ray loop");
+      throw std::logic_error("bench: Embree's prepared records answered " + std::to_string(differ) + " of the " +
+                             m_spec.name + " rays otherwise than when verified");
     }
   }
 

@@ -69,8 +69,10 @@ class EmbreeReference {
   /// Converts `rays` into Embree's own records ahead of time (replacing any earlier set), for the
   /// loop a user runs whose rays are already in Embree's layout: filling each record just before
   /// its call costs Embree up to 1.7x (docs/performance.md), which our side, reading a prepared
-  /// array of Ray, does not pay. The prepared traces below then time Embree alone.
-  void prepare(std::span<const Ray> rays);
+  /// array of Ray, does not pay. The prepared traces below then time Embree alone. `packets`:
+  /// prepare packets of 16 consecutive rays (from ray 0, the last one masked) instead of single
+  /// records.
+  void prepare(std::span<const Ray> rays, bool packets = false);
   /// Restores the prepared records [begin, end) that a trace consumed (tfar and the hit are
   /// written); to be called outside the clock.
   void reset_prepared(std::size_t begin, std::size_t end) const;
@@ -78,6 +80,11 @@ class EmbreeReference {
   void intersect1_prepared(std::size_t begin, std::size_t end) const;
   /// One rtcOccluded1 per prepared record in [begin, end), nothing else.
   void occluded1_prepared(std::size_t begin, std::size_t end) const;
+  /// rtcIntersect16 on the prepared packets holding rays [begin, end), with a coherent context
+  /// as intersect16; `begin` a multiple of 16.
+  void intersect16_prepared(std::size_t begin, std::size_t end) const;
+  /// rtcOccluded16 on the prepared packets holding rays [begin, end); `begin` a multiple of 16.
+  void occluded16_prepared(std::size_t begin, std::size_t end) const;
   /// The answers of the last prepared closest-hit trace, as intersect1 gives them.
   void prepared_hits(std::span<Hit> hits) const;
   /// The answers of the last prepared any-hit trace, as occluded1 gives them.
