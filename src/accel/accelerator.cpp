@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "hit_list.h"
+#include "raylab/core/float_neighbour.h"
 
 namespace raylab {
 
@@ -34,7 +35,7 @@ void Accelerator::all_hits(const Ray& ray, std::vector<Hit>& hits) const {
     if (!intersect(probe, hit)) return;
     hits.push_back(hit);
     // Past this hit: the next search starts at the next float, and runs to the original end.
-    probe.tmin = std::nextafter(hit.t, std::numeric_limits<float>::infinity());
+    probe.tmin = next_float_up(hit.t);
     probe.tmax = ray.tmax;
     if (!(probe.tmin < probe.tmax)) return;
   }

@@ -10,26 +10,20 @@
 #include <vector>
 
 #include "bvh_build_ref.h"
+#include "raylab/core/float_neighbour.h"
 
 namespace raylab::bvh_build {
 namespace {
 
 // Rounds a double outward to the float below (toward -inf) or above (toward +inf), so that boxes
 // of clipped triangles, whose corners are computed in double, contain the exact clipped part.
-// (A float's neighbour is one unit of its bit pattern away; inline, unlike std::nextafter.)
 float round_down(double x) {
   const auto f = static_cast<float>(x);
-  if (!(static_cast<double>(f) > x)) return f;
-  if (f == 0.f) return -std::numeric_limits<float>::denorm_min();
-  const auto bits = std::bit_cast<std::uint32_t>(f);
-  return std::bit_cast<float>(f > 0.f ? bits - 1 : bits + 1);
+  return static_cast<double>(f) > x ? next_float_down(f) : f;
 }
 float round_up(double x) {
   const auto f = static_cast<float>(x);
-  if (!(static_cast<double>(f) < x)) return f;
-  if (f == 0.f) return std::numeric_limits<float>::denorm_min();
-  const auto bits = std::bit_cast<std::uint32_t>(f);
-  return std::bit_cast<float>(f > 0.f ? bits + 1 : bits - 1);
+  return static_cast<double>(f) < x ? next_float_up(f) : f;
 }
 
 // Boxes of the parts of triangle `t` on either side of the plane x[axis] = position, each

@@ -1,6 +1,7 @@
 #include "raylab/accel/embree_reference.h"
 
 #include "raylab/core/error.h"
+#include "raylab/core/float_neighbour.h"
 #include "raylab/core/stopwatch.h"
 
 #if defined(RAYLAB_HAVE_EMBREE)
@@ -96,7 +97,7 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
 }
 
 // Embree's intervals are closed, ours [tmin, tmax): Embree gets the float below tmax.
-float embree_tfar(float tmax) { return std::nextafter(tmax, -kInf); }
+float embree_tfar(float tmax) { return next_float_down(tmax); }
 
 RTCRay embree_ray(const Ray& r) {
   RTCRay e{};  // time, id and flags 0

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "raylab/core/float_neighbour.h"
 #include "raylab/core/vec3.h"
 
 namespace raylab {
@@ -72,7 +73,7 @@ struct Hit {
   /// candidate with a lower id is tested against the next float above `tmax`, so that a hit at
   /// exactly `tmax` is taken.
   float tie_limit(std::uint32_t candidate, float tmax) const {
-    return valid() && candidate < prim_id ? std::nextafter(tmax, std::numeric_limits<float>::infinity()) : tmax;
+    return valid() && candidate < prim_id ? next_float_up(tmax) : tmax;
   }
 };
 
