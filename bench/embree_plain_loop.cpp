@@ -28,6 +28,7 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
@@ -38,6 +39,7 @@
 #include "raylab/accel/embree_reference.h"
 #include "raylab/accel/factory.h"
 #include "raylab/core/error.h"
+#include "raylab/core/hash64.h"
 #include "raylab/io/ray_file.h"
 #include "raylab/io/scene_loader.h"
 
@@ -72,9 +74,10 @@ WeldedMesh weld(const Geometry& g, bool share = true) {
   };
   struct KeyHash {
     std::size_t operator()(const Key& k) const {
-      const std::size_t a = std::bit_cast<unsigned>(k.x), b = std::bit_cast<unsigned>(k.y),
-                        c = std::bit_cast<unsigned>(k.z);
-      return (a * 0x9E3779B97F4A7C15ull) ^ (b * 0xC2B2AE3D27D4EB4Full) ^ (c * 0x165667B19E3779F9ull);
+      raylab::Hash64 h;  // the project's one hash
+      h.word(std::uint64_t{std::bit_cast<std::uint32_t>(k.x)} << 32 | std::bit_cast<std::uint32_t>(k.y));
+      h.word(std::bit_cast<std::uint32_t>(k.z));
+      return static_cast<std::size_t>(h.value());
     }
   };
   WeldedMesh m;
