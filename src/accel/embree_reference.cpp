@@ -303,6 +303,11 @@ void load_packet(std::span<const Ray> rays, Packet& p, int (&valid)[16]) {
   }
 }
 
+// Marks every lane of a packet as not hit yet, as rtcIntersect16 requires.
+void clear_hits(RTCRayHit16& rh) {
+  for (int k = 0; k < 16; ++k) rh.hit.geomID[k] = rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+}
+
 // Calls `trace(context, b, n, valid, packet)` for each run of up to 16 rays [b, b + n) loaded
 // into a fresh Embree packet of type Packet (`rays_of(packet)` is its ray part) with the valid
 // mask, under one coherent context: the rays of a packet come from neighbouring pixels.
@@ -329,7 +334,7 @@ void EmbreeReference::prepare(std::span<const Ray> rays, bool packets) {
       RTCRayHit16& rh = m->prepared16.emplace_back();
       State::Valid16& valid = m->valid16.emplace_back();
       load_packet(rays.subspan(b, std::min<std::size_t>(16, rays.size() - b)), rh.ray, valid.lane);
-      for (int k = 0; k < 16; ++k) rh.hit.geomID[k] = rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+      clear_hits(rh);
     }
     m->work16 = m->prepared16;
     return;
@@ -409,7 +414,7 @@ void EmbreeReference::intersect16(std::span<const Ray> rays, std::span<Hit> hits
   for_each_packet16<RTCRayHit16>(
       rays, [](RTCRayHit16& rh) -> RTCRay16& { return rh.ray; },
       [&](RTCIntersectContext& context, std::size_t b, std::size_t n, int(&valid)[16], RTCRayHit16& rh) {
-        for (int k = 0; k < 16; ++k) rh.hit.geomID[k] = rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+        clear_hits(rh);
         rtcIntersect16(valid, m->scene, &context, &rh);
         for (std::size_t k = 0; k < n; ++k) {
           hits[b + k] = m->hit_of(rh.hit.geomID[k], rh.hit.primID[k], rh.ray.tfar[k], rh.hit.u[k], rh.hit.v[k]);
