@@ -11,8 +11,10 @@
 
 #include "commands.h"
 #include "help_format.h"
+#include "isa_option.h"
 #include "parse_errors.h"
 #include "raylab/core/error.h"
+#include "raylab/core/isa.h"
 #include "raylab/core/terminal.h"
 #include "raylab/dist/launcher.h"
 #include "raylab/version.h"
@@ -26,7 +28,14 @@ int main(int argc, char** argv) {
   app.formatter(std::make_shared<raylab::cli::WrappingFormatter>(
       static_cast<std::size_t>(raylab::terminal_columns(STDOUT_FILENO))));
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("raylab ") + raylab::version());
+  app.set_version_flag("--version",
+                       [] { return std::string("raylab ") + raylab::version() + "\n" + raylab::isa_summary(); });
+  std::string isa;
+  app.add_option("--isa", isa,
+                 "Instruction set of the kernels: baseline, avx2 or avx512 (default: the widest this CPU "
+                 "has, or RAYLAB_ISA); a lower one is for comparisons");
+  // `raylab bench --isa avx2 ...` reaches the option above too.
+  app.fallthrough();
   const raylab::cli::CommandRunner run_render = raylab::cli::add_render_command(app);
   const raylab::cli::CommandRunner run_diff = raylab::cli::add_diff_command(app);
   const raylab::cli::CommandRunner run_info = raylab::cli::add_info_command(app);
@@ -55,6 +64,7 @@ int main(int argc, char** argv) {
     return raylab::cli::kExitUsageError;
   }
   try {
+    raylab::cli::choose_isa(isa);
     if (app.got_subcommand("render")) return run_render();
     if (app.got_subcommand("diff")) return run_diff();
     if (app.got_subcommand("info")) return run_info();

@@ -101,6 +101,15 @@ def load(path: _Path, *, allow_outside_paths: bool = False) -> Scene:
 def accelerators() -> list[str]:
     """Names of the structures this build has."""
 
+def isa() -> str:
+    """The instruction set of the kernels structures built from now on run: 'baseline', 'avx2' or 'avx512'."""
+
+def set_isa(isa: str) -> None:
+    """Makes `isa` the instruction set of structures built from now on; ValueError if this CPU cannot run it."""
+
+def usable_isas() -> list[str]:
+    """The instruction sets this build has and this CPU can run, narrowest first."""
+
 def pinhole_rays(
     width: int, height: int, eye: _Vec3, at: _Vec3, up: _Vec3 = (0.0, 1.0, 0.0), fov: float = 45.0
 ) -> npt.NDArray[np.float32]:

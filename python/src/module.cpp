@@ -8,6 +8,7 @@
 #include "py_scene.h"
 #include "raylab/accel/factory.h"
 #include "raylab/core/error.h"
+#include "raylab/core/isa.h"
 
 namespace py = pybind11;
 
@@ -39,6 +40,31 @@ PYBIND11_MODULE(_raylab, m) {
         return names;
       },
       "Names of the acceleration structures this build has, for Scene.build(accel=...).");
+
+  m.def(
+      "isa", [] { return std::string(raylab::isa_name(raylab::active_isa())); },
+      "The instruction set of the kernels that structures built from now on run: 'baseline', 'avx2' or "
+      "'avx512' (the widest this CPU has, unless RAYLAB_ISA or set_isa chose another).");
+  m.def(
+      "set_isa",
+      [](const std::string& isa) {
+        const auto parsed = raylab::parse_isa(isa);
+        if (!parsed) throw py::value_error("isa: '" + isa + "' is not one of 'baseline', 'avx2', 'avx512'");
+        try {
+          raylab::set_isa(*parsed);
+        } catch (const std::invalid_argument& e) {
+          throw py::value_error(std::string("isa: ") + e.what());
+        }
+      },
+      py::arg("isa"), "Makes `isa` the instruction set of structures built from now on (for comparisons).");
+  m.def(
+      "usable_isas",
+      [] {
+        std::vector<std::string> names;
+        for (raylab::Isa isa : raylab::usable_isas()) names.emplace_back(raylab::isa_name(isa));
+        return names;
+      },
+      "The instruction sets this build has and this CPU can run, narrowest first.");
 
   m.attr("__version__") = RAYLAB_PYTHON_VERSION;
 

@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "hit_list.h"
+#include "traversal_entry_points.h"
 
 namespace raylab {
 
@@ -21,7 +22,7 @@ BruteForce::BruteForce(const Geometry& geometry, std::span<const std::uint32_t> 
 
 // Through Geometry::intersect for every kind, not the structures' shared leaf test: the
 // reference stays independent of the code it checks.
-template <bool kAnyHit, bool kCount>
+template <bool kAnyHit, bool kCount, class K>
 bool BruteForce::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   const WatertightRay wr(ray);
   const auto n = static_cast<std::uint32_t>(m_ids.size());
@@ -48,9 +49,6 @@ bool BruteForce::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   }
 }
 
-// The four entry points, compiled here where the kernel is defined.
-template class TraversalAccelerator<BruteForce>;
-
 void BruteForce::all_hits(const Ray& ray, std::vector<Hit>& hits) const {
   if (!traceable_direction(ray.direction)) return;  // no ray (see traceable_direction)
   const WatertightRay wr(ray);
@@ -71,5 +69,16 @@ AccelInfo BruteForce::info() const {
   info.primitive_count = m_ids.size();
   return info;
 }
+
+// The reference has no kernel of its own: every set's name calls the one compilation above,
+// so that brute force answers the same whatever the active set.
+RAYLAB_INSTANTIATE_TRAVERSE_AS(BruteForce, KernelIsa);
+#ifdef RAYLAB_KERNELS_AVX2
+RAYLAB_INSTANTIATE_TRAVERSE_AS(BruteForce, isa_avx2::KernelIsa);
+#endif
+#ifdef RAYLAB_KERNELS_AVX512
+RAYLAB_INSTANTIATE_TRAVERSE_AS(BruteForce, isa_avx512::KernelIsa);
+#endif
+template class TraversalAccelerator<BruteForce>;
 
 }  // namespace raylab

@@ -9,6 +9,7 @@
 #include "bvh_depth.h"
 #include "leaf_test.h"
 #include "traversal_common.h"
+#include "traversal_entry_points.h"
 
 namespace raylab {
 
@@ -65,6 +66,7 @@ static_assert(kStackSize >= bvh_depth::kBinaryStackSize, "the builder's depth bo
 
 }  // namespace
 
+#ifndef RAYLAB_KERNEL_VARIANT  // once, with the library's own flags (kernel_dispatch.h)
 Bvh::Bvh(const Geometry& geometry, const BvhConfig& config) : Bvh(geometry, geometry.primitive_ids(), config) {}
 
 Bvh::Bvh(const Geometry& geometry, std::span<const std::uint32_t> ids, const BvhConfig& config) : m_geometry(geometry) {
@@ -80,16 +82,18 @@ Box3 Bvh::bounds() const {
   return {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
 }
 
-template <bool kAnyHit, bool kCount>
+#endif  // RAYLAB_KERNEL_VARIANT
+
+template <bool kAnyHit, bool kCount, class K>
 bool Bvh::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   if (m_tree.prim_ids.empty()) return false;
   const BvhBoxRay box_ray(ray);
   return dispatch_octant(direction_octant(ray.direction), [&](auto octant) {
-    return traverse_octant<kAnyHit, kCount, decltype(octant)::value>(ray, box_ray, hit, stats);
+    return traverse_octant<kAnyHit, kCount, decltype(octant)::value, K>(ray, box_ray, hit, stats);
   });
 }
 
-template <bool kAnyHit, bool kCount, int kOctant>
+template <bool kAnyHit, bool kCount, int kOctant, class K>
 bool Bvh::traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, TraversalStats* stats) const {
   // Everything the loop touches lives in locals: stores through `ray` and `hit` inside the loop
   // would force the compiler to reload node and array pointers after each one (they may alias).
@@ -150,8 +154,9 @@ bool Bvh::traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, Traversa
   return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
 }
 
-// The four entry points, compiled here where the kernel is defined.
-template class TraversalAccelerator<Bvh>;
+#ifndef RAYLAB_KERNEL_VARIANT  // once, with the library's own flags (kernel_dispatch.h)
+// The four entry points, which call the kernel of the structure's instruction set.
+RAYLAB_INSTANTIATE_ENTRY_POINTS(Bvh);
 
 AccelInfo Bvh::info() const {
   AccelInfo info;
@@ -165,5 +170,10 @@ AccelInfo Bvh::info() const {
   info.max_depth = m_tree.max_depth;
   return info;
 }
+
+#endif  // RAYLAB_KERNEL_VARIANT
+
+// The kernel, compiled here for this translation unit's instruction set.
+RAYLAB_INSTANTIATE_TRAVERSE(Bvh);
 
 }  // namespace raylab

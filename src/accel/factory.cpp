@@ -1,4 +1,5 @@
 #include "raylab/accel/factory.h"
+#include "raylab/core/isa.h"
 
 #include <array>
 
@@ -35,7 +36,11 @@ std::unique_ptr<Accelerator> make_accelerator(std::string_view name, const Geome
 
 std::unique_ptr<Accelerator> make_accelerator(std::string_view name, const Geometry& geometry,
                                               std::span<const std::uint32_t> ids, const AccelConfig& config) {
-  if (name == "bvh") return std::make_unique<WideBvh<simd::kNativeBoxWidth>>(geometry, ids, config.bvh);
+  if (name == "bvh") {
+    // The node width the active set tests with one instruction per plane.
+    if (native_box_width(active_isa()) == 16) return std::make_unique<WideBvh<16>>(geometry, ids, config.bvh);
+    return std::make_unique<WideBvh<8>>(geometry, ids, config.bvh);
+  }
   if (name == "bvh4") return std::make_unique<WideBvh<4>>(geometry, ids, config.bvh);
   if (name == "bvh8") return std::make_unique<WideBvh<8>>(geometry, ids, config.bvh);
   if (name == "bvh16") return std::make_unique<WideBvh<16>>(geometry, ids, config.bvh);

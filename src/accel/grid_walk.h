@@ -13,9 +13,11 @@
 
 #include "raylab/core/box.h"
 #include "raylab/core/ray.h"
+#include "raylab/simd/isa_namespace.h"
 #include "traversal_common.h"
 
 namespace raylab {
+RAYLAB_ISA_BEGIN
 
 /// Clips the range [t_in, t_out] of a ray from `o` with reciprocal direction `inv_d` to `box`;
 /// true when something is left. The far distance is widened as in the BVH, so that a ray
@@ -50,6 +52,7 @@ inline int clamp_cell(float f, int n) { return f >= 0.f ? (f < float(n) ? static
 inline float grid_plane(float lo, float hi, float cell, int i, int n) {
   return i >= n ? hi : std::min(lo + float(i) * cell, hi);
 }
+RAYLAB_ISA_END
 
 /// One ray's walk through one grid. Per axis: the parameter of the first cell boundary the ray
 /// crosses (inf along an axis it does not move along), the parameter length of one cell, the

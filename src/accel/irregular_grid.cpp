@@ -24,6 +24,7 @@
 #include "mailbox.h"
 #include "raylab/core/stopwatch.h"
 #include "traversal_common.h"
+#include "traversal_entry_points.h"
 
 namespace raylab {
 namespace {
@@ -37,6 +38,7 @@ struct NoVisit {
 
 }  // namespace
 
+#ifndef RAYLAB_KERNEL_VARIANT  // once, with the library's own flags (kernel_dispatch.h)
 IrregularGrid::IrregularGrid(const Geometry& geometry, const IrregularGridConfig& config)
     : IrregularGrid(geometry, geometry.primitive_ids(), config) {}
 
@@ -59,7 +61,9 @@ IrregularGrid::IrregularGrid(const Geometry& geometry, std::span<const std::uint
 
 IrregularGrid::~IrregularGrid() = default;
 
-template <bool kAnyHit, bool kCount>
+#endif  // RAYLAB_KERNEL_VARIANT
+
+template <bool kAnyHit, bool kCount, class K>
 bool IrregularGrid::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   if (m_mailboxes) {
     return walk<kAnyHit, kCount>(
@@ -162,6 +166,7 @@ bool IrregularGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, MakeMailbox 
   return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
 }
 
+#ifndef RAYLAB_KERNEL_VARIANT  // once, with the library's own flags (kernel_dispatch.h)
 std::vector<WalkedCell> IrregularGrid::cells_on_ray(const Ray& ray) const {
   std::vector<WalkedCell> out;
   Ray probe = ray;
@@ -195,7 +200,12 @@ AccelInfo IrregularGrid::info() const {
   return info;
 }
 
-// The four entry points, compiled here where the kernel is defined.
-template class TraversalAccelerator<IrregularGrid>;
+// The four entry points, which call the kernel of the structure's instruction set.
+RAYLAB_INSTANTIATE_ENTRY_POINTS(IrregularGrid);
+
+#endif  // RAYLAB_KERNEL_VARIANT
+
+// The kernel, compiled here for this translation unit's instruction set.
+RAYLAB_INSTANTIATE_TRAVERSE(IrregularGrid);
 
 }  // namespace raylab

@@ -8,9 +8,11 @@
 #include <vector>
 
 #include "raylab/geometry/geometry.h"
+#include "raylab/simd/isa_namespace.h"
 #include "traversal_common.h"
 
 namespace raylab {
+RAYLAB_ISA_BEGIN
 
 /// Primitives a structure keeps in its own order ("slots"): the global id at each slot, and
 /// copies of the triangles at the same slots (for locality: the leaf's data lies together).
@@ -187,4 +189,5 @@ inline bool intersect_references(const Primitives& prims, std::uint32_t begin, s
   return found;
 }
 
+RAYLAB_ISA_END
 }  // namespace raylab

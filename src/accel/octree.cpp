@@ -34,6 +34,7 @@
 #include "mailbox.h"
 #include "raylab/simd/float4.h"
 #include "traversal_common.h"
+#include "traversal_entry_points.h"
 #include "wide_bvh_leaf.h"
 
 namespace raylab {
@@ -199,6 +200,7 @@ struct IgnoreCells {
 
 }  // namespace
 
+#ifndef RAYLAB_KERNEL_VARIANT  // once, with the library's own flags (kernel_dispatch.h)
 Octree::Octree(const Geometry& geometry, const OctreeConfig& config)
     : Octree(geometry, geometry.primitive_ids(), config) {}
 
@@ -214,7 +216,9 @@ Octree::Octree(const Geometry& geometry, std::span<const std::uint32_t> ids, con
 
 Octree::~Octree() = default;
 
-template <bool kAnyHit, bool kCount>
+#endif  // RAYLAB_KERNEL_VARIANT
+
+template <bool kAnyHit, bool kCount, class K>
 bool Octree::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   return walk<kAnyHit, kCount>(ray, hit, stats, IgnoreCells{});
 }
@@ -358,6 +362,7 @@ bool Octree::walk(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) c
   }
 }
 
+#ifndef RAYLAB_KERNEL_VARIANT  // once, with the library's own flags (kernel_dispatch.h)
 std::vector<WalkedCell> Octree::cells_on_ray(const Ray& ray) const {
   std::vector<WalkedCell> cells;
   Ray r = ray;
@@ -366,8 +371,8 @@ std::vector<WalkedCell> Octree::cells_on_ray(const Ray& ray) const {
   return cells;
 }
 
-// The four entry points, compiled here where the kernel is defined.
-template class TraversalAccelerator<Octree>;
+// The four entry points, which call the kernel of the structure's instruction set.
+RAYLAB_INSTANTIATE_ENTRY_POINTS(Octree);
 
 AccelInfo Octree::info() const {
   AccelInfo info;
@@ -382,5 +387,10 @@ AccelInfo Octree::info() const {
   info.max_depth = m_tree.max_depth;
   return info;
 }
+
+#endif  // RAYLAB_KERNEL_VARIANT
+
+// The kernel, compiled here for this translation unit's instruction set.
+RAYLAB_INSTANTIATE_TRAVERSE(Octree);
 
 }  // namespace raylab

@@ -10,8 +10,10 @@
 
 #include "raylab/core/stats.h"
 #include "raylab/geometry/geometry.h"
+#include "raylab/simd/isa_namespace.h"
 
 namespace raylab {
+RAYLAB_ISA_BEGIN
 
 /// The work a counted query does, added up during the walk and handed to TraversalStats at the
 /// end (a structure's uncounted kernels never touch it).
@@ -127,4 +129,5 @@ inline bool finish_traversal(bool found, float tmax, const Hit& best, const Trav
   return found;
 }
 
+RAYLAB_ISA_END
 }  // namespace raylab

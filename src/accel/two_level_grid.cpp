@@ -9,6 +9,7 @@
 #include "mailbox.h"
 #include "raylab/accel/two_level_grid.h"
 #include "traversal_common.h"
+#include "traversal_entry_points.h"
 
 namespace raylab {
 namespace {
@@ -20,7 +21,7 @@ struct IgnoreCells {
 
 }  // namespace
 
-template <bool kAnyHit, bool kCount>
+template <bool kAnyHit, bool kCount, class K>
 bool TwoLevelGrid::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   return run<kAnyHit, kCount>(ray, hit, stats, IgnoreCells{});
 }
@@ -29,12 +30,14 @@ template <bool kAnyHit, bool kCount, class OnCell>
 bool TwoLevelGrid::run(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) const {
   GridWalk top;
   float t_in;
-  if (!clip_and_enter(ray, top, t_in)) return finish_traversal<kCount>(false, ray.tmax, hit, {}, ray, hit, stats);
+  if (!clip_and_enter<KernelIsa>(ray, top, t_in))
+    return finish_traversal<kCount>(false, ray.tmax, hit, {}, ray, hit, stats);
   // The ray's stamp is taken only now: rays that miss the grid never touch the mailboxes.
   if (m_mailboxes) return walk<kAnyHit, kCount>(ray, hit, stats, top, t_in, m_mailboxes->begin_ray(), on_cell);
   return walk<kAnyHit, kCount>(ray, hit, stats, top, t_in, TestEverySlot{}, on_cell);
 }
 
+template <class K>
 bool TwoLevelGrid::clip_and_enter(const Ray& ray, GridWalk& w, float& t_in) const {
   if (m_refs.empty()) return false;
   const Vec3 o = ray.origin, d = ray.direction;
@@ -163,6 +166,7 @@ bool TwoLevelGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk& top
   return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
 }
 
+#ifndef RAYLAB_KERNEL_VARIANT  // once, with the library's own flags (kernel_dispatch.h)
 std::vector<WalkedCell> TwoLevelGrid::cells_on_ray(const Ray& ray) const {
   std::vector<WalkedCell> cells;
   const std::size_t nx = m_top_resolution[0], ny = m_top_resolution[1];
@@ -188,7 +192,12 @@ std::vector<WalkedCell> TwoLevelGrid::cells_on_ray(const Ray& ray) const {
   return cells;
 }
 
-// The four entry points, compiled here where the kernel is defined.
-template class TraversalAccelerator<TwoLevelGrid>;
+// The four entry points, which call the kernel of the structure's instruction set.
+RAYLAB_INSTANTIATE_ENTRY_POINTS(TwoLevelGrid);
+
+#endif  // RAYLAB_KERNEL_VARIANT
+
+// The kernel, compiled here for this translation unit's instruction set.
+RAYLAB_INSTANTIATE_TRAVERSE(TwoLevelGrid);
 
 }  // namespace raylab

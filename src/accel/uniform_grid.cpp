@@ -11,6 +11,7 @@
 #include "leaf_test.h"
 #include "mailbox.h"
 #include "traversal_common.h"
+#include "traversal_entry_points.h"
 
 namespace raylab {
 
@@ -23,7 +24,7 @@ struct IgnoreCells {
 
 }  // namespace
 
-template <bool kAnyHit, bool kCount>
+template <bool kAnyHit, bool kCount, class K>
 bool UniformGrid::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   return run<kAnyHit, kCount>(ray, hit, stats, IgnoreCells{});
 }
@@ -31,12 +32,13 @@ bool UniformGrid::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
 template <bool kAnyHit, bool kCount, class OnCell>
 bool UniformGrid::run(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) const {
   GridWalk w;
-  if (!clip_and_enter(ray, w)) return finish_traversal<kCount>(false, ray.tmax, hit, {}, ray, hit, stats);
+  if (!clip_and_enter<KernelIsa>(ray, w)) return finish_traversal<kCount>(false, ray.tmax, hit, {}, ray, hit, stats);
   // The ray's stamp is taken only now: rays that miss the grid never touch the mailboxes.
   if (m_mailboxes) return walk_cells<kAnyHit, kCount>(ray, hit, stats, w, m_mailboxes->begin_ray(), on_cell);
   return walk_cells<kAnyHit, kCount>(ray, hit, stats, w, TestEverySlot{}, on_cell);
 }
 
+template <class K>
 bool UniformGrid::clip_and_enter(const Ray& ray, GridWalk& w) const {
   if (m_refs.empty()) return false;
   const Vec3 o = ray.origin, d = ray.direction;
@@ -100,6 +102,7 @@ bool UniformGrid::walk_cells(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk
   return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
 }
 
+#ifndef RAYLAB_KERNEL_VARIANT  // once, with the library's own flags (kernel_dispatch.h)
 std::vector<WalkedCell> UniformGrid::cells_on_ray(const Ray& ray) const {
   std::vector<WalkedCell> cells;
   // A cell holding primitives, a single empty cell, or (distance > 1) the cube of empty cells
@@ -120,7 +123,12 @@ std::vector<WalkedCell> UniformGrid::cells_on_ray(const Ray& ray) const {
   return cells;
 }
 
-// The four entry points, compiled here where the kernel is defined.
-template class TraversalAccelerator<UniformGrid>;
+// The four entry points, which call the kernel of the structure's instruction set.
+RAYLAB_INSTANTIATE_ENTRY_POINTS(UniformGrid);
+
+#endif  // RAYLAB_KERNEL_VARIANT
+
+// The kernel, compiled here for this translation unit's instruction set.
+RAYLAB_INSTANTIATE_TRAVERSE(UniformGrid);
 
 }  // namespace raylab

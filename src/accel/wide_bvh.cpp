@@ -8,10 +8,12 @@
 #include <chrono>
 #include <cmath>
 
+#include "traversal_entry_points.h"
 #include "wide_bvh_collapse.h"
 #include "wide_bvh_walk.h"
 
 namespace raylab {
+#ifndef RAYLAB_KERNEL_VARIANT  // once, with the library's own flags (kernel_dispatch.h)
 template <int W>
 WideBvh<W>::WideBvh(const Geometry& geometry, const BvhConfig& config)
     : WideBvh(geometry, geometry.primitive_ids(), config) {}
@@ -42,8 +44,10 @@ BvhConfig WideBvh<W>::build_config(const BvhConfig& config) {
   return block_config;
 }
 
+#endif  // RAYLAB_KERNEL_VARIANT
+
 template <int W>
-template <bool kAnyHit, bool kCount>
+template <bool kAnyHit, bool kCount, class K>
 bool WideBvh<W>::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   if (m_tree.leaves.empty()) return false;
   const WideBoxRay<W> box_ray(ray);
@@ -56,10 +60,11 @@ bool WideBvh<W>::traverse(Ray& ray, Hit& hit, TraversalStats* stats) const {
   return finish_traversal<kCount>(found, tmax, best, counters, ray, hit, stats);
 }
 
+#ifndef RAYLAB_KERNEL_VARIANT  // once, with the library's own flags (kernel_dispatch.h)
 template <int W>
 AccelInfo WideBvh<W>::info() const {
   AccelInfo info;
-  info.name = W == simd::kNativeBoxWidth ? "bvh" : "bvh" + std::to_string(W);
+  info.name = W == native_box_width(this->kernel_isa()) ? "bvh" : "bvh" + std::to_string(W);
   info.build_seconds = m_build_seconds;
   const WideBvhLeaves& leaves = m_tree.leaves;
   info.memory_bytes = m_tree.nodes.size() * sizeof(WideBvhNode<W>) + leaves.blocks.size() * sizeof(TriangleBlock4) +
@@ -79,12 +84,19 @@ AccelInfo WideBvh<W>::info() const {
   return info;
 }
 
-// The single-ray entry points, compiled here where the kernel is defined.
-template class TraversalAccelerator<WideBvh<4>>;
-template class TraversalAccelerator<WideBvh<8>>;
-template class TraversalAccelerator<WideBvh<16>>;
+// The single-ray entry points, which call the kernel of the structure's instruction set.
+RAYLAB_INSTANTIATE_ENTRY_POINTS(WideBvh<4>);
+RAYLAB_INSTANTIATE_ENTRY_POINTS(WideBvh<8>);
+RAYLAB_INSTANTIATE_ENTRY_POINTS(WideBvh<16>);
 template class WideBvh<4>;
 template class WideBvh<8>;
 template class WideBvh<16>;
+
+#endif  // RAYLAB_KERNEL_VARIANT
+
+// The single-ray kernel, compiled here for this translation unit's instruction set.
+RAYLAB_INSTANTIATE_TRAVERSE(WideBvh<4>);
+RAYLAB_INSTANTIATE_TRAVERSE(WideBvh<8>);
+RAYLAB_INSTANTIATE_TRAVERSE(WideBvh<16>);
 
 }  // namespace raylab

@@ -10,10 +10,12 @@
 
 #include "leaf_test.h"
 #include "raylab/accel/wide_bvh.h"
+#include "raylab/simd/isa_namespace.h"
 #include "raylab/simd/wide_float.h"
 #include "traversal_common.h"
 
 namespace raylab {
+RAYLAB_ISA_BEGIN
 
 /// The number of triangle blocks of a leaf whose node slot holds `count_flags`: the leaf's
 /// triangles are the blocks [first, first + this), unused lanes (kNoPrimitive) excepted. When
@@ -187,4 +189,5 @@ struct WideStackEntry {
   float t;
 };
 
+RAYLAB_ISA_END
 }  // namespace raylab

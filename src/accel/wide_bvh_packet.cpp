@@ -10,6 +10,7 @@
 #include <bit>
 #include <cmath>
 
+#include "kernel_dispatch.h"
 #include "raylab/accel/wide_bvh.h"
 #include "raylab/geometry/triangle_rays.h"
 #include "wide_bvh_walk.h"
@@ -153,7 +154,7 @@ struct PacketStackEntry {
 }  // namespace
 
 template <int W>
-template <bool kAnyHit, int kOctant>
+template <bool kAnyHit, int kOctant, class K>
 void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occluded_out, int n) const {
   using L = simd::WideFloat<kRayLanes>;
   constexpr int kGroups = kPacketSize / kRayLanes;
@@ -352,12 +353,29 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
 }
 
 template <int W>
-template <bool kAnyHit>
+template <bool kAnyHit, class K>
 void WideBvh<W>::trace_packet(Ray* rays, Hit* hits, std::uint8_t* occluded_out, int n) const {
   dispatch_octant(direction_octant(rays[0].direction), [&](auto octant) {
-    trace_packet_octant<kAnyHit, decltype(octant)::value>(rays, hits, occluded_out, n);
+    trace_packet_octant<kAnyHit, decltype(octant)::value, K>(rays, hits, occluded_out, n);
   });
 }
+
+#ifndef RAYLAB_KERNEL_VARIANT  // once, with the library's own flags (kernel_dispatch.h)
+// The packet kernels of the other sets, compiled in their own kernel sources (see
+// RAYLAB_EXTERN_TRAVERSE in kernel_dispatch.h for why they are declared).
+#define RAYLAB_EXTERN_PACKETS(Tag)                                                                  \
+  extern template void WideBvh<4>::trace_packet<false, Tag>(Ray*, Hit*, std::uint8_t*, int) const;  \
+  extern template void WideBvh<8>::trace_packet<false, Tag>(Ray*, Hit*, std::uint8_t*, int) const;  \
+  extern template void WideBvh<16>::trace_packet<false, Tag>(Ray*, Hit*, std::uint8_t*, int) const; \
+  extern template void WideBvh<4>::trace_packet<true, Tag>(Ray*, Hit*, std::uint8_t*, int) const;   \
+  extern template void WideBvh<8>::trace_packet<true, Tag>(Ray*, Hit*, std::uint8_t*, int) const;   \
+  extern template void WideBvh<16>::trace_packet<true, Tag>(Ray*, Hit*, std::uint8_t*, int) const
+#ifdef RAYLAB_KERNELS_AVX2
+RAYLAB_EXTERN_PACKETS(isa_avx2::KernelIsa);
+#endif
+#ifdef RAYLAB_KERNELS_AVX512
+RAYLAB_EXTERN_PACKETS(isa_avx512::KernelIsa);
+#endif
 
 template <int W>
 void WideBvh<W>::intersect(std::span<Ray> rays, std::span<Hit> hits) const {
@@ -366,7 +384,9 @@ void WideBvh<W>::intersect(std::span<Ray> rays, std::span<Hit> hits) const {
     if (end - begin == 1) {
       intersect(rays[begin], hits[begin]);
     } else {
-      trace_packet<false>(&rays[begin], &hits[begin], nullptr, static_cast<int>(end - begin));
+      with_kernels(this->kernel_isa(), [&]<class K>() {
+        trace_packet<false, K>(&rays[begin], &hits[begin], nullptr, static_cast<int>(end - begin));
+      });
     }
   });
 }
@@ -383,7 +403,10 @@ void WideBvh<W>::occluded(std::span<const Ray> rays, std::span<std::uint8_t> occ
     } else {
       // The packet kernel writes no ray state for any-hit queries; it takes a mutable pointer
       // only because closest-hit queries share it.
-      trace_packet<true>(const_cast<Ray*>(&rays[begin]), nullptr, &occluded_out[begin], static_cast<int>(end - begin));
+      with_kernels(this->kernel_isa(), [&]<class K>() {
+        trace_packet<true, K>(const_cast<Ray*>(&rays[begin]), nullptr, &occluded_out[begin],
+                              static_cast<int>(end - begin));
+      });
     }
   });
 }
@@ -394,5 +417,15 @@ template void WideBvh<16>::intersect(std::span<Ray>, std::span<Hit>) const;
 template void WideBvh<4>::occluded(std::span<const Ray>, std::span<std::uint8_t>) const;
 template void WideBvh<8>::occluded(std::span<const Ray>, std::span<std::uint8_t>) const;
 template void WideBvh<16>::occluded(std::span<const Ray>, std::span<std::uint8_t>) const;
+
+#endif  // RAYLAB_KERNEL_VARIANT
+
+// The packet kernels, compiled here for this translation unit's instruction set.
+template void WideBvh<4>::trace_packet<false, KernelIsa>(Ray*, Hit*, std::uint8_t*, int) const;
+template void WideBvh<8>::trace_packet<false, KernelIsa>(Ray*, Hit*, std::uint8_t*, int) const;
+template void WideBvh<16>::trace_packet<false, KernelIsa>(Ray*, Hit*, std::uint8_t*, int) const;
+template void WideBvh<4>::trace_packet<true, KernelIsa>(Ray*, Hit*, std::uint8_t*, int) const;
+template void WideBvh<8>::trace_packet<true, KernelIsa>(Ray*, Hit*, std::uint8_t*, int) const;
+template void WideBvh<16>::trace_packet<true, KernelIsa>(Ray*, Hit*, std::uint8_t*, int) const;
 
 }  // namespace raylab

@@ -6,9 +6,11 @@
 #include <cstdint>
 
 #include "bvh_depth.h"
+#include "raylab/simd/isa_namespace.h"
 #include "wide_bvh_leaf.h"
 
 namespace raylab {
+RAYLAB_ISA_BEGIN
 
 using bvh_depth::kWideStackSize;  // sized by the builder's depth bound
 
@@ -74,4 +76,5 @@ bool walk_wide_bvh(const WideBvhTree<W>& tree, const Geometry& geometry, WideSta
   }
 }
 
+RAYLAB_ISA_END
 }  // namespace raylab

@@ -47,6 +47,15 @@ const char* headline() {
   return "the extensions listed";
 }
 
+}  // namespace
+
+bool pretended_missing(Feature f) {
+  const char* pretend = std::getenv("RAYLAB_CPU_CHECK_PRETEND_MISSING");
+  return pretend != nullptr && listed(pretend, feature_name(f));
+}
+
+namespace {
+
 // Runs when the library is loaded, before the constructors of its other files (priority 101
 // comes first) and before the program's own. RAYLAB_CPU_CHECK_PRETEND_MISSING (a list such as
 // "avx2,fma") makes it treat those extensions as missing, so that the tests can see the message.

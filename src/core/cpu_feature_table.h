@@ -55,5 +55,8 @@ extern const char kBuildArch[];
 const char* feature_name(Feature f);
 /// Whether this CPU, and the operating system for the AVX register states, supports `f`.
 bool cpu_supports(Feature f);
+/// Whether RAYLAB_CPU_CHECK_PRETEND_MISSING lists `f`: the tests' way to play a CPU without it
+/// (for the load-time check and for the choice of kernels, raylab/core/isa.h).
+bool pretended_missing(Feature f);
 
 }  // namespace raylab::cpu

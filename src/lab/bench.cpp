@@ -2,6 +2,7 @@
 // table and JSON are in bench_format.cpp.
 
 #include "raylab/lab/bench.h"
+#include "raylab/core/isa.h"
 #include "raylab/core/thread_count.h"
 
 #include <fmt/format.h>
@@ -408,6 +409,7 @@ BenchReport run_bench(const Scene& scene, const BenchOptions& o, const BenchAcce
   rep.threads = threads;
   rep.repeats = o.repeats;
 
+  rep.kernels = isa_name(active_isa());
   std::unique_ptr<EmbreeReference> ref;
   if (!o.against_embree) {
     rep.notes.push_back("Embree not measured (--against none): our figures only");

@@ -42,8 +42,8 @@ ReportJson agreement_json(const BenchAgreement& a) {
 std::string format_bench_table(const BenchReport& r, const std::string& scene_name) {
   std::string out = fmt::format("bench {}: {} primitives ({} triangles)", scene_name, r.primitives, r.triangles);
   if (r.width > 0) out += fmt::format("; {}x{} primary rays in 4x4 tiles", r.width, r.height);
-  out += fmt::format("; {} thread{}; median of {} runs, ours and Embree interleaved\n", r.threads,
-                     r.threads == 1 ? "" : "s", r.repeats);
+  out += fmt::format("; {} thread{}; median of {} runs, ours and Embree interleaved; our kernels: {}\n", r.threads,
+                     r.threads == 1 ? "" : "s", r.repeats, r.kernels);
   out += fmt::format("{:<28}{:>10}{:>12}{:>12}{:>13}\n", "", "rays", "raylab " + r.accel, r.embree ? "embree 3" : "-",
                      "ours/embree");
   for (const BenchSetReport& s : r.sets) {
@@ -67,16 +67,10 @@ std::string format_bench_table(const BenchReport& r, const std::string& scene_na
 
 std::string format_bench_json(const BenchReport& r, const std::string& scene_name) {
   const Vec3 p = r.light.position;
-  ReportJson doc = {{"scene", scene_name},
-                    {"accel", r.accel},
-                    {"primitives", r.primitives},
-                    {"triangles", r.triangles},
-                    {"user_primitives", r.user_primitives},
-                    {"width", r.width},
-                    {"height", r.height},
-                    {"threads", r.threads},
-                    {"repeats", r.repeats},
-                    {"embree", r.embree}};
+  ReportJson doc = {{"scene", scene_name},        {"accel", r.accel},         {"kernels", r.kernels},
+                    {"primitives", r.primitives}, {"triangles", r.triangles}, {"user_primitives", r.user_primitives},
+                    {"width", r.width},           {"height", r.height},       {"threads", r.threads},
+                    {"repeats", r.repeats},       {"embree", r.embree}};
   doc["light"] = {{"position", {p.x, p.y, p.z}}, {"from_scene", r.light_from_scene}};
   doc["build_ms"] = figure_json(r.build_ms, r.embree);
   doc["build_mprims_per_s"] = figure_json(r.build_mprims, r.embree);

@@ -94,7 +94,6 @@ TEST(AccelFactory, NamesAndUnknownName) {
   EXPECT_EQ(make_accelerator("bvh2", g)->info().name, "bvh2");
   EXPECT_EQ(make_accelerator("brute", g)->info().name, "brute");
   // "bvh" is the wide tree at the build's native width, "bvh2" the binary one.
-  EXPECT_NE(dynamic_cast<const WideBvh<simd::kNativeBoxWidth>*>(make_accelerator("bvh", g).get()), nullptr);
   EXPECT_NE(dynamic_cast<const WideBvh<4>*>(make_accelerator("bvh4", g).get()), nullptr);
   EXPECT_NE(dynamic_cast<const WideBvh<16>*>(make_accelerator("bvh16", g).get()), nullptr);
   EXPECT_NE(dynamic_cast<const Bvh*>(make_accelerator("bvh2", g).get()), nullptr);

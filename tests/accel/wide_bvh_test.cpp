@@ -32,6 +32,7 @@
 #include "raylab/accel/brute_force.h"
 #include "raylab/accel/bvh.h"
 #include "raylab/accel/wide_bvh.h"
+#include "raylab/core/isa.h"
 #include "raylab/simd/wide_float.h"
 #include "test_scenes.h"
 
@@ -500,7 +501,7 @@ void check_accelerator(const Geometry& g, const BvhConfig& config, const BvhTree
   EXPECT_EQ(held.leaves.others, wide.leaves.others);
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(held.nodes.data()) % 64, 0u) << "nodes not cache-line aligned";
   const AccelInfo info = accel.info();
-  EXPECT_EQ(info.name, W == simd::kNativeBoxWidth ? std::string("bvh") : "bvh" + std::to_string(W));
+  EXPECT_EQ(info.name, W == native_box_width(active_isa()) ? std::string("bvh") : "bvh" + std::to_string(W));
   EXPECT_EQ(info.node_count, wide.nodes.size());
   EXPECT_EQ(info.leaf_count, tree.leaf_count);
   EXPECT_EQ(info.primitive_count, tree.prim_ids.size());

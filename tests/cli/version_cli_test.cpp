@@ -9,6 +9,7 @@
 
 #include "cli_fixture.h"
 #include "raylab/core/cpu_features.h"
+#include "raylab/core/isa.h"
 #include "raylab/version.h"
 
 namespace raylab {
@@ -24,8 +25,8 @@ bool build_requires(const std::string& feature) {
 TEST_F(Cli, VersionPrintsTheLibraryVersion) {
   const CliResult r = run("--version");
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(r.out, "raylab " RAYLAB_VERSION_STRING "\n");
-  EXPECT_EQ(r.out, std::string("raylab ") + version() + "\n");
+  EXPECT_EQ(r.out, "raylab " RAYLAB_VERSION_STRING "\n" + isa_summary() + "\n");
+  EXPECT_EQ(r.out.rfind(std::string("raylab ") + version() + "\nkernels: ", 0), 0u) << r.out;
 }
 
 TEST_F(Cli, MissingCpuExtensionIsNamedWithExitOne) {
@@ -52,7 +53,7 @@ TEST_F(Cli, EveryMissingCpuExtensionIsListed) {
 TEST_F(Cli, PretendingAnUnusedExtensionIsMissingChangesNothing) {
   const CliResult r = run("--version", "RAYLAB_CPU_CHECK_PRETEND_MISSING=sse4a");
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(r.out, "raylab " RAYLAB_VERSION_STRING "\n");
+  EXPECT_EQ(r.out, "raylab " RAYLAB_VERSION_STRING "\n" + isa_summary() + "\n");
 }
 
 }  // namespace

@@ -65,7 +65,7 @@ expected_others=$(
   done
   echo bin/raylab
   if [ -n "$pydir" ]; then
-    for f in __init__.py __init__.pyi py.typed; do echo "$pydir/raylab/$f"; done
+    for f in __init__.py __init__.pyi py.typed _build.py; do echo "$pydir/raylab/$f"; done
     (cd "$build/python/raylab" && ls _raylab*.so | sed "s|^|$pydir/raylab/|")
   fi
 )
@@ -146,7 +146,7 @@ for f in "$prefix/bin/raylab" "$prefix/$libdir"/libraylab*.so."$version"; do
   ! readelf -d "$f" | grep -F "$build" || fail "$f keeps a path into the build tree"
 done
 readelf -d "$prefix/bin/raylab" | grep -qF "[\$ORIGIN/../$libdir]" || fail "bin/raylab has no \$ORIGIN/../$libdir RUNPATH"
-[ "$(env -i "$prefix/bin/raylab" --version)" = "raylab $version" ] || fail "installed raylab --version"
+[ "$(env -i "$prefix/bin/raylab" --version | head -n 1)" = "raylab $version" ] || fail "installed raylab --version"
 # The installed module, with nothing but PYTHONPATH: it finds libraylab.so by its RUNPATH.
 import_check='import raylab, numpy as np
 s = raylab.Mesh(np.float32([[0, 0, 0], [1, 0, 0], [0, 1, 0]]), np.uint32([[0, 1, 2]]))
@@ -157,8 +157,23 @@ if [ -n "$pydir" ]; then
   step "the installed Python module imports and answers with only PYTHONPATH set"
   env -i PYTHONPATH="$prefix/$pydir" "$python" -c "$import_check" || fail "installed module"
 fi
+# Every instruction set this CPU runs, forced by RAYLAB_ISA: the installed program says it uses
+# it and renders the same bytes, and the installed module reports it and answers.
+sets=$(env -i "$prefix/bin/raylab" --version | sed -n 's/.*this CPU: \(.*\))$/\1/p' | tr -d ,)
+[ -n "$sets" ] || fail "raylab --version names no instruction set"
+step "each instruction set ($sets) forced: the installed program and module"
+for set in $sets; do
+  env -i RAYLAB_ISA="$set" "$prefix/bin/raylab" --version | grep -q "^kernels: $set " || fail "RAYLAB_ISA=$set not taken"
+  env -i RAYLAB_ISA="$set" "$prefix/bin/raylab" render demo --width 48 --height 32 -q -o "$tmp/demo-$set.pfm" ||
+    fail "render with RAYLAB_ISA=$set"
+  cmp "$tmp/demo-${sets%% *}.pfm" "$tmp/demo-$set.pfm" || fail "RAYLAB_ISA=$set renders other bytes"
+  if [ -n "$pydir" ]; then
+    env -i RAYLAB_ISA="$set" PYTHONPATH="$prefix/$pydir" "$python" -c "$import_check
+assert raylab.isa() == '$set', raylab.isa()" || fail "installed module with RAYLAB_ISA=$set"
+  fi
+done
 mv "$prefix" "$tmp/moved"
-[ "$(env -i "$tmp/moved/bin/raylab" --version)" = "raylab $version" ] || fail "moved raylab --version"
+[ "$(env -i "$tmp/moved/bin/raylab" --version | head -n 1)" = "raylab $version" ] || fail "moved raylab --version"
 if [ -n "$pydir" ]; then
   env -i PYTHONPATH="$tmp/moved/$pydir" "$python" -c "$import_check" || fail "moved module"
 fi

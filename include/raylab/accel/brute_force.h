@@ -28,7 +28,7 @@ class BruteForce final : public TraversalAccelerator<BruteForce> {
  private:
   friend class TraversalAccelerator<BruteForce>;
   // The kernel of every query (TraversalAccelerator).
-  template <bool kAnyHit, bool kCount>
+  template <bool kAnyHit, bool kCount, class K>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
 
   const Geometry& m_geometry;

@@ -90,9 +90,9 @@ class Bvh final : public TraversalAccelerator<Bvh> {
  private:
   friend class TraversalAccelerator<Bvh>;
   // The kernel of every query (TraversalAccelerator): dispatches on the direction's octant.
-  template <bool kAnyHit, bool kCount>
+  template <bool kAnyHit, bool kCount, class K>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
-  template <bool kAnyHit, bool kCount, int kOctant>
+  template <bool kAnyHit, bool kCount, int kOctant, class K>
   bool traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, TraversalStats* stats) const;
 
   const Geometry& m_geometry;

@@ -152,7 +152,7 @@ class IrregularGrid final : public TraversalAccelerator<IrregularGrid>, public C
  private:
   friend class TraversalAccelerator<IrregularGrid>;
   // The kernel of every query (TraversalAccelerator).
-  template <bool kAnyHit, bool kCount>
+  template <bool kAnyHit, bool kCount, class K>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
   // The walk itself; `visit(cell)` is called for every cell visited (cells_on_ray).
   template <bool kAnyHit, bool kCount, class Mailbox, class Visit>

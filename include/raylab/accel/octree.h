@@ -161,7 +161,7 @@ class Octree final : public TraversalAccelerator<Octree>, public CellWalk {
  private:
   friend class TraversalAccelerator<Octree>;
   // The kernel of every query (TraversalAccelerator).
-  template <bool kAnyHit, bool kCount>
+  template <bool kAnyHit, bool kCount, class K>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
   // The walk behind traverse and cells_on_ray: `on_cell(box, tested)` hears of every cell the ray
   // steps through (a no-op for queries).

@@ -120,13 +120,15 @@ class TwoLevelGrid final : public TraversalAccelerator<TwoLevelGrid>, public Cel
   void order_by_top_cell();
   friend class TraversalAccelerator<TwoLevelGrid>;
   // The kernel of every query (TraversalAccelerator).
-  template <bool kAnyHit, bool kCount>
+  template <bool kAnyHit, bool kCount, class K>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
   // The kernel, telling on_cell(top index, leaf cell or null, tested, jump reach in cells) about
   // every cell it counts.
   template <bool kAnyHit, bool kCount, class OnCell>
   bool run(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) const;
   // Clips the ray to the box and sets up the top walk; false when the ray misses the grid.
+  // (A template only so that each instruction set's kernel source compiles its own copy.)
+  template <class K>
   bool clip_and_enter(const Ray& ray, GridWalk& walk, float& t_in) const;
   template <bool kAnyHit, bool kCount, class Mailbox, class OnCell>
   bool walk(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk& top, float t_in, Mailbox mailbox,

@@ -109,7 +109,7 @@ class UniformGrid final : public TraversalAccelerator<UniformGrid>, public CellW
   void order_by_cell(std::array<int, 3> resolution);
   friend class TraversalAccelerator<UniformGrid>;
   // The kernel of every query (TraversalAccelerator): clip, enter, walk.
-  template <bool kAnyHit, bool kCount>
+  template <bool kAnyHit, bool kCount, class K>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
   // The kernel, telling `on_cell(walk, empty-space distance)` about every cell it counts
   // (cells_on_ray).
@@ -117,6 +117,8 @@ class UniformGrid final : public TraversalAccelerator<UniformGrid>, public CellW
   bool run(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) const;
   // Clips the ray to the grid's box and sets up its walk from the entry cell; false when the
   // ray misses the grid.
+  // (A template only so that each instruction set's kernel source compiles its own copy.)
+  template <class K>
   bool clip_and_enter(const Ray& ray, GridWalk& walk) const;
   // Walks the cells from `walk` on; `mailbox` is the ray's stamp or a stand-in that tests all.
   template <bool kAnyHit, bool kCount, class Mailbox, class OnCell>

@@ -132,11 +132,11 @@ class WideBvh final : public TraversalAccelerator<WideBvh<W>> {
  private:
   friend class TraversalAccelerator<WideBvh<W>>;
   // The kernel of every single-ray query (TraversalAccelerator).
-  template <bool kAnyHit, bool kCount>
+  template <bool kAnyHit, bool kCount, class K>
   bool traverse(Ray& ray, Hit& hit, TraversalStats* stats) const;
-  template <bool kAnyHit>
+  template <bool kAnyHit, class K>
   void trace_packet(Ray* rays, Hit* hits, std::uint8_t* occluded, int n) const;
-  template <bool kAnyHit, int kOctant>
+  template <bool kAnyHit, int kOctant, class K>
   void trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occluded, int n) const;
 
   const Geometry& m_geometry;

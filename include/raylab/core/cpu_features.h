@@ -1,9 +1,10 @@
 #pragma once
 /// \file
-/// The CPU the library was built for. A release build uses -march=x86-64-v3 (AVX2, FMA, BMI1/2,
-/// F16C, MOVBE, LZCNT); on a CPU without those the library prints what is missing and exits with
-/// status 1 when it is loaded, before any instruction the CPU lacks can raise SIGILL. These
-/// functions let a program or a test ask the same questions.
+/// The CPU the library was built for. A release build uses -march=x86-64 and runs anywhere (its
+/// wider kernels are chosen at run time, raylab/core/isa.h); a build for a higher level
+/// (RAYLAB_ARCH=x86-64-v3, native) prints, on a CPU without what it uses, what is missing and
+/// exits with status 1 when it is loaded, before any instruction the CPU lacks can raise SIGILL.
+/// These functions let a program or a test ask the same questions.
 
 #include <string>
 #include <vector>

@@ -12,6 +12,7 @@
 #include "raylab/geometry/triangle.h"
 #include "raylab/simd/double4.h"
 #include "raylab/simd/float4.h"
+#include "raylab/simd/isa_namespace.h"
 
 namespace raylab {
 
@@ -62,6 +63,8 @@ inline TriangleBlock4 empty_triangle_block() {
   for (int i = 0; i < 4; ++i) b.id[i] = TriangleBlock4::kNoPrimitive;
   return b;
 }
+
+RAYLAB_ISA_BEGIN
 
 /// The float filter of `intersect_triangle` lane by lane, from the sheared vertices (a, b, c on
 /// the permuted x and y axes): the mask of lanes whose ray surely passes beside the triangle
@@ -163,4 +166,5 @@ inline int intersect_triangle_block(const TriangleBlock4& block, const Watertigh
                            [&](int ties) { return block_lanes_rejected_by_ties(ties, block, wr); });
 }
 
+RAYLAB_ISA_END
 }  // namespace raylab

@@ -6,9 +6,11 @@
 /// `intersect_triangle(tri, WatertightRay(ray_i), ...)` gives.
 
 #include "raylab/geometry/triangle_block.h"
+#include "raylab/simd/isa_namespace.h"
 #include "raylab/simd/wide_float.h"
 
 namespace raylab {
+RAYLAB_ISA_BEGIN
 
 /// The watertight constants of N rays that share one axis permutation (kx, ky, kz), lane by
 /// lane: the origins' coordinates on the permuted axes and the shears.
@@ -106,4 +108,5 @@ inline unsigned intersect_triangle_rays(const TriangleBlock4& block, int lane, c
                            v_out, [&](unsigned ties) { return rays_rejected_by_ties(ties, block, lane, rays); });
 }
 
+RAYLAB_ISA_END
 }  // namespace raylab

@@ -75,6 +75,7 @@ struct BenchSetReport {
 /// Everything `run_bench` measured.
 struct BenchReport {
   std::string accel;                ///< our structure
+  std::string kernels;              ///< the instruction set of our kernels (raylab/core/isa.h)
   std::size_t primitives = 0;       ///< in the scene
   std::size_t triangles = 0;        ///< of which triangles
   std::size_t user_primitives = 0;  ///< traced by Embree through user geometry (our shape tests)

@@ -7,6 +7,7 @@
 /// results as its scalar version.
 
 #include "raylab/simd/float4.h"
+#include "raylab/simd/isa_namespace.h"
 
 #if defined(__AVX__) && !defined(RAYLAB_SIMD_SCALAR)
 #include <immintrin.h>
@@ -14,6 +15,7 @@
 #endif
 
 namespace raylab::simd {
+RAYLAB_ISA_BEGIN
 
 namespace scalar {
 
@@ -79,4 +81,5 @@ using Double4 = sse::Double4;
 using Double4 = scalar::Double4;
 #endif
 
+RAYLAB_ISA_END
 }  // namespace raylab::simd

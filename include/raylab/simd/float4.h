@@ -11,12 +11,15 @@
 
 #include <cstring>
 
+#include "raylab/simd/isa_namespace.h"
+
 #if defined(__SSE2__) && !defined(RAYLAB_SIMD_SCALAR)
 #include <immintrin.h>
 #define RAYLAB_HAVE_SSE 1
 #endif
 
 namespace raylab::simd {
+RAYLAB_ISA_BEGIN
 
 namespace scalar {
 
@@ -117,4 +120,5 @@ using Float4 = sse::Float4;
 using Float4 = scalar::Float4;
 #endif
 
+RAYLAB_ISA_END
 }  // namespace raylab::simd

@@ -8,6 +8,8 @@
 
 #include <cstring>
 
+#include "raylab/simd/isa_namespace.h"
+
 #include "raylab/simd/float4.h"
 
 #if !defined(RAYLAB_SIMD_SCALAR) && (defined(__AVX__) || defined(__AVX512F__))
@@ -15,6 +17,7 @@
 #endif
 
 namespace raylab::simd {
+RAYLAB_ISA_BEGIN
 
 namespace scalar {
 
@@ -245,4 +248,5 @@ inline constexpr int kNativeBoxWidth = 16;
 inline constexpr int kNativeBoxWidth = 8;
 #endif
 
+RAYLAB_ISA_END
 }  // namespace raylab::simd
