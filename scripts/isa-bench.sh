@@ -19,8 +19,9 @@ echo "# $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); sets: $set
 echo "# raylab bench $scene --threads $threads --repeats 5 --allow-outside-paths --isa SET, $rounds rounds"
 for round in $(seq "$rounds"); do
   for set in $sets; do
+    # Progress goes to a log, shown only when a run fails.
     "$raylab" bench "$scene" --threads "$threads" --repeats 5 --allow-outside-paths --isa "$set" \
-      --json "$out/$set-$round.json" >/dev/null
+      --json "$out/$set-$round.json" >/dev/null 2>"$out/log" || { cat "$out/log" >&2; exit 1; }
   done
 done
 /usr/bin/python3 - "$out" $sets <<'PY'
