@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "raylab/geometry/cylinder.h"
 #include "raylab/geometry/geometry.h"
 #include "raylab/simd/isa_namespace.h"
 #include "traversal_common.h"
@@ -139,6 +140,20 @@ inline bool intersect_through_geometry(const Geometry& geometry, std::uint32_t i
   const bool hit = geometry.intersect(id, tri_ray, probe, best);
   tmax = probe.tmax;
   return hit;
+}
+
+/// Tests cylinder `id` from its precomputed `frame` against `ray` restricted to [tmin, tmax),
+/// with intersect_through_geometry's contract and bit for bit its answer (Geometry::intersect's
+/// rule: the candidate is tested up to the tie limit of the closest hit so far).
+template <bool kAnyHit>
+inline bool intersect_cylinder_frame(const CylinderFrame& frame, std::uint32_t id, const Ray& ray, float tmin,
+                                     float& tmax, Hit& best) {
+  float t = 0.f, v = 0.f;
+  if constexpr (kAnyHit) return intersect_cylinder(frame, ray, tmin, tmax, t, v);  // no hit yet: no tie limit
+  if (!intersect_cylinder(frame, ray, tmin, best.tie_limit(id, tmax), t, v)) return false;
+  tmax = t;
+  best = Hit{t, id, 0.f, v};
+  return true;
 }
 
 /// Tests the references [begin, end) against `ray` restricted to [tmin, tmax): reference r is

@@ -47,7 +47,9 @@ inline bool intersect_wide_leaf_others(const WideBvhLeaves& leaves, const Geomet
   bool found = false;
   for (const std::uint32_t id : leaves.others_of(first, count_flags)) {
     if constexpr (kCount) ++counters.prim_tests;
-    if (intersect_through_geometry<kAnyHit>(geometry, id, tri_ray, ray, tmin, tmax, best)) {
+    const CylinderFrame* frame = leaves.cylinder_frame_of(id);
+    if (frame != nullptr ? intersect_cylinder_frame<kAnyHit>(*frame, id, ray, tmin, tmax, best)
+                         : intersect_through_geometry<kAnyHit>(geometry, id, tri_ray, ray, tmin, tmax, best)) {
       found = true;
       if constexpr (kAnyHit) return true;
     }

@@ -4,22 +4,39 @@
 
 namespace raylab {
 
-bool intersect_cylinder(const Cylinder& cyl, const Ray& ray, float tmin, float tmax, float& t, float& height) {
+CylinderFrame cylinder_frame(const Cylinder& cyl) {
   // Frame along the axis: s = height above the base, q = radial offset. The surface is
   // |q(t)| = r0 + k s(t), with k the radius change per unit height.
+  CylinderFrame f;
+  f.base = cyl.base;
+  f.base_radius = cyl.base_radius;
   const Vec3 axis = cyl.apex - cyl.base;
-  const double h = std::sqrt(double(dot(axis, axis)));
+  f.h = std::sqrt(double(dot(axis, axis)));
+  if (f.h == 0.0) return f;
+  f.wx = axis.x / f.h;
+  f.wy = axis.y / f.h;
+  f.wz = axis.z / f.h;
+  f.k = (double(cyl.apex_radius) - cyl.base_radius) / f.h;
+  return f;
+}
+
+bool intersect_cylinder(const Cylinder& cyl, const Ray& ray, float tmin, float tmax, float& t, float& height) {
+  return intersect_cylinder(cylinder_frame(cyl), ray, tmin, tmax, t, height);
+}
+
+bool intersect_cylinder(const CylinderFrame& frame, const Ray& ray, float tmin, float tmax, float& t, float& height) {
+  const double h = frame.h;
   if (h == 0.0) return false;
-  const double wx = axis.x / h, wy = axis.y / h, wz = axis.z / h;
-  const double fx = double(ray.origin.x) - cyl.base.x, fy = double(ray.origin.y) - cyl.base.y,
-               fz = double(ray.origin.z) - cyl.base.z;
+  const double wx = frame.wx, wy = frame.wy, wz = frame.wz, k = frame.k;
+  const Vec3& base = frame.base;
+  const double fx = double(ray.origin.x) - base.x, fy = double(ray.origin.y) - base.y,
+               fz = double(ray.origin.z) - base.z;
   const double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
   const double s0 = fx * wx + fy * wy + fz * wz;
   const double ds = dx * wx + dy * wy + dz * wz;
   const double q0x = fx - s0 * wx, q0y = fy - s0 * wy, q0z = fz - s0 * wz;
   const double qdx = dx - ds * wx, qdy = dy - ds * wy, qdz = dz - ds * wz;
-  const double k = (double(cyl.apex_radius) - cyl.base_radius) / h;
-  const double r_at_origin = cyl.base_radius + k * s0;
+  const double r_at_origin = frame.base_radius + k * s0;
   const double a = qdx * qdx + qdy * qdy + qdz * qdz - k * k * ds * ds;
   const double b = 2.0 * (q0x * qdx + q0y * qdy + q0z * qdz - k * r_at_origin * ds);
   const double c = q0x * q0x + q0y * q0y + q0z * q0z - r_at_origin * r_at_origin;
@@ -48,7 +65,7 @@ bool intersect_cylinder(const Cylinder& cyl, const Ray& ray, float tmin, float t
     if (!(tr >= tmin && tr < tmax)) continue;
     const double s = s0 + tr * ds;
     if (s < 0.0 || s > h) continue;
-    if (cyl.base_radius + k * s < 0.0) continue;  // the mirror nappe of a cone
+    if (frame.base_radius + k * s < 0.0) continue;  // the mirror nappe of a cone
     t = static_cast<float>(tr);
     if (!(t >= tmin && t < tmax)) continue;
     height = static_cast<float>(s / h);

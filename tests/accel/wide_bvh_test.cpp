@@ -505,8 +505,8 @@ void check_accelerator(const Geometry& g, const BvhConfig& config, const BvhTree
   EXPECT_EQ(info.node_count, wide.nodes.size());
   EXPECT_EQ(info.leaf_count, tree.leaf_count);
   EXPECT_EQ(info.primitive_count, tree.prim_ids.size());
-  EXPECT_EQ(info.memory_bytes,
-            info.node_count * W * 32 + wide.leaves.blocks.size() * 160 + wide.leaves.others.size() * 4);
+  EXPECT_EQ(info.memory_bytes, info.node_count * W * 32 + wide.leaves.blocks.size() * 160 +
+                                   wide.leaves.others.size() * 4 + held.leaves.cylinder_frames.size() * 56);
   EXPECT_EQ(info.max_depth, wide.max_depth);
   EXPECT_GE(info.build_seconds, 0.0);
   if (!tree.prim_ids.empty()) {
@@ -873,6 +873,38 @@ Geometry degenerate(int which) {
       break;
   }
   return g;
+}
+
+// The leaves keep a frame for each cylinder id in the range the tree holds, equal to the one
+// the test computes from the Cylinder (so the tree's answers stay Geometry::intersect's, which
+// BitIdenticalToBinaryBvhAndBruteForce checks); a tree over part of the scene covers only the
+// range of its own cylinders, and a scene without cylinders keeps none.
+TYPED_TEST(WideBvhTest, CylinderFramesCoverTheTreesCylinders) {
+  constexpr int W = TypeParam::value;
+  Sampler s(61);
+  const Geometry g = every_shape_kind(s);
+  ASSERT_GT(g.cylinders.size(), 4u);
+  const auto first = static_cast<std::uint32_t>(g.triangles.size() + g.spheres.size());
+  const auto same = [](const CylinderFrame& a, const CylinderFrame& b) {
+    return a.base == b.base && a.base_radius == b.base_radius && a.wx == b.wx && a.wy == b.wy && a.wz == b.wz &&
+           a.h == b.h && a.k == b.k;
+  };
+  const WideBvh<W> whole(g);
+  const WideBvhLeaves& leaves = whole.tree().leaves;
+  EXPECT_EQ(leaves.cylinder_begin, first);
+  ASSERT_EQ(leaves.cylinder_frames.size(), g.cylinders.size());
+  for (std::size_t i = 0; i < g.cylinders.size(); ++i) {
+    EXPECT_TRUE(same(leaves.cylinder_frames[i], cylinder_frame(g.cylinders[i]))) << i;
+  }
+  EXPECT_EQ(leaves.cylinder_frame_of(first - 1), nullptr);
+  EXPECT_EQ(leaves.cylinder_frame_of(first + static_cast<std::uint32_t>(g.cylinders.size())), nullptr);
+  const std::uint32_t part[] = {0, first + 2, first + 3, first + 4};
+  const WideBvh<W> subset(g, part);
+  EXPECT_EQ(subset.tree().leaves.cylinder_begin, first + 2);
+  EXPECT_EQ(subset.tree().leaves.cylinder_frames.size(), 3u);
+  Geometry no_cylinders;
+  no_cylinders.add(Sphere{}, 0);
+  EXPECT_TRUE(WideBvh<W>(no_cylinders).tree().leaves.cylinder_frames.empty());
 }
 
 TYPED_TEST(WideBvhTest, DegenerateGeometry) {

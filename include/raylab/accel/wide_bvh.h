@@ -12,6 +12,7 @@
 #include "raylab/accel/accelerator.h"
 #include "raylab/accel/bvh.h"
 #include "raylab/core/uninitialized_vector.h"
+#include "raylab/geometry/cylinder.h"
 #include "raylab/geometry/geometry.h"
 #include "raylab/geometry/triangle_block.h"
 #include "raylab/simd/wide_float.h"
@@ -48,6 +49,16 @@ struct WideBvhLeaves {
   UninitializedVector<TriangleBlock4> blocks;  ///< triangles, leaf after leaf
   std::vector<std::uint32_t> others;           ///< ids of the other kinds (and headers), see above
   std::uint32_t triangle_count = 0;            ///< primitive ids below this are triangles
+  /// The frames of the cylinders the tree holds, for ids cylinder_begin and up (one per id of
+  /// that range, whether the tree holds it or not): what their test needs, computed at build.
+  std::vector<CylinderFrame> cylinder_frames;
+  std::uint32_t cylinder_begin = 0;  ///< the id of cylinder_frames[0]
+
+  /// The frame of primitive `id` when it is a cylinder with one, else null.
+  const CylinderFrame* cylinder_frame_of(std::uint32_t id) const {
+    const std::uint32_t i = id - cylinder_begin;  // wraps around below the range
+    return i < cylinder_frames.size() ? &cylinder_frames[i] : nullptr;
+  }
 
   /// Whether no leaf holds anything (no ray can hit).
   bool empty() const { return blocks.empty() && others.empty(); }
