@@ -120,7 +120,7 @@ TEST(Isa, NamesRoundTrip) {
   EXPECT_FALSE(parse_isa("AVX2").has_value());
 }
 
-TEST(Isa, UsableSetsAreBuiltAndStartWithBaseline) {
+TEST(Isa, UsableSetsAreBuiltAndTheWidestIsTheDefault) {
   const std::vector<Isa> built = built_isas(), usable = usable_isas();
   ASSERT_FALSE(usable.empty());
   for (Isa isa : usable) {
