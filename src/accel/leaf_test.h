@@ -142,18 +142,40 @@ inline bool intersect_through_geometry(const Geometry& geometry, std::uint32_t i
   return hit;
 }
 
+/// Runs `test(limit, t, u, v)`, the test of primitive `id` against the ray up to `limit`, with
+/// the tie rule (Hit::tie_limit) of the closest hit so far, `best`; on a hit of a closest-hit
+/// query, shrinks `tmax` and makes the hit `best`. Geometry::intersect's rule, for the shapes a
+/// structure tests itself.
+template <bool kAnyHit, class Test>
+inline bool test_with_tie_rule(std::uint32_t id, float& tmax, Hit& best, const Test& test) {
+  float t = 0.f, u = 0.f, v = 0.f;
+  // An any-hit query has no hit yet, so no tie limit.
+  if (!test(kAnyHit ? tmax : best.tie_limit(id, tmax), t, u, v)) return false;
+  if constexpr (!kAnyHit) {
+    tmax = t;
+    best = Hit{t, id, u, v};
+  }
+  return true;
+}
+
 /// Tests cylinder `id` from its precomputed `frame` against `ray` restricted to [tmin, tmax),
-/// with intersect_through_geometry's contract and bit for bit its answer (Geometry::intersect's
-/// rule: the candidate is tested up to the tie limit of the closest hit so far).
+/// with intersect_through_geometry's contract and bit for bit its answer.
 template <bool kAnyHit>
 inline bool intersect_cylinder_frame(const CylinderFrame& frame, std::uint32_t id, const Ray& ray, float tmin,
                                      float& tmax, Hit& best) {
-  float t = 0.f, v = 0.f;
-  if constexpr (kAnyHit) return intersect_cylinder(frame, ray, tmin, tmax, t, v);  // no hit yet: no tie limit
-  if (!intersect_cylinder(frame, ray, tmin, best.tie_limit(id, tmax), t, v)) return false;
-  tmax = t;
-  best = Hit{t, id, 0.f, v};
-  return true;
+  return test_with_tie_rule<kAnyHit>(id, tmax, best, [&](float limit, float& t, float&, float& v) {
+    return intersect_cylinder(frame, ray, tmin, limit, t, v);
+  });
+}
+
+/// Tests sphere `id` (`sphere`) against `ray` restricted to [tmin, tmax), with
+/// intersect_through_geometry's contract and bit for bit its answer.
+template <bool kAnyHit>
+inline bool intersect_sphere_here(const Sphere& sphere, std::uint32_t id, const Ray& ray, float tmin, float& tmax,
+                                  Hit& best) {
+  return test_with_tie_rule<kAnyHit>(id, tmax, best, [&](float limit, float& t, float&, float&) {
+    return intersect_sphere(sphere, ray, tmin, limit, t);
+  });
 }
 
 /// Tests the references [begin, end) against `ray` restricted to [tmin, tmax): reference r is
@@ -175,21 +197,12 @@ inline bool intersect_references(const Primitives& prims, std::uint32_t begin, s
     if constexpr (kCount) ++counters.prim_tests;
     bool hit_here;
     if (id < prims.triangle_count) {
-      float t, u, v;
-      hit_here = intersect_triangle(prims.triangle(slot, id), tri_ray, tmin, kAnyHit ? tmax : best.tie_limit(id, tmax),
-                                    t, u, v);
-      if (!kAnyHit && hit_here) {
-        tmax = t;
-        best = {t, id, u, v};
-      }
+      hit_here = test_with_tie_rule<kAnyHit>(id, tmax, best, [&](float limit, float& t, float& u, float& v) {
+        return intersect_triangle(prims.triangle(slot, id), tri_ray, tmin, limit, t, u, v);
+      });
     } else if constexpr (Primitives::kInlineSpheres) {
       if (id < prims.sphere_end) {
-        float t;
-        hit_here = intersect_sphere(prims.sphere(slot, id), ray, tmin, kAnyHit ? tmax : best.tie_limit(id, tmax), t);
-        if (!kAnyHit && hit_here) {
-          tmax = t;
-          best = {t, id, 0.f, 0.f};
-        }
+        hit_here = intersect_sphere_here<kAnyHit>(prims.sphere(slot, id), id, ray, tmin, tmax, best);
       } else {
         hit_here = intersect_through_geometry<kAnyHit>(*prims.geometry, id, tri_ray, ray, tmin, tmax, best);
       }

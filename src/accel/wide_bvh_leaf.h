@@ -45,11 +45,21 @@ inline bool intersect_wide_leaf_others(const WideBvhLeaves& leaves, const Geomet
                                        float tmin, float& tmax, Hit& best, TraversalCounters& counters) {
   if (!leaf_has_others<W>(count_flags)) return false;
   bool found = false;
+  const auto sphere_count = static_cast<std::uint32_t>(geometry.spheres.size());
   for (const std::uint32_t id : leaves.others_of(first, count_flags)) {
     if constexpr (kCount) ++counters.prim_tests;
+    // Spheres and cylinders are tested here, the other kinds and groups through the Geometry.
+    const std::uint32_t sphere = id - leaves.triangle_count;  // wraps around below the spheres
     const CylinderFrame* frame = leaves.cylinder_frame_of(id);
-    if (frame != nullptr ? intersect_cylinder_frame<kAnyHit>(*frame, id, ray, tmin, tmax, best)
-                         : intersect_through_geometry<kAnyHit>(geometry, id, tri_ray, ray, tmin, tmax, best)) {
+    bool hit;
+    if (sphere < sphere_count) {
+      hit = intersect_sphere_here<kAnyHit>(geometry.spheres[sphere], id, ray, tmin, tmax, best);
+    } else if (frame != nullptr) {
+      hit = intersect_cylinder_frame<kAnyHit>(*frame, id, ray, tmin, tmax, best);
+    } else {
+      hit = intersect_through_geometry<kAnyHit>(geometry, id, tri_ray, ray, tmin, tmax, best);
+    }
+    if (hit) {
       found = true;
       if constexpr (kAnyHit) return true;
     }
