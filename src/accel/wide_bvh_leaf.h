@@ -34,15 +34,21 @@ inline bool leaf_has_others(std::uint32_t count_flags) {
 /// Tests the primitives of a leaf listed by id, not in its triangle blocks (`first` and
 /// `count_flags` as stored in its node slot), against `ray` restricted to [tmin, tmax); on a hit
 /// shrinks `tmax` and updates `best` (closest hit, lower id on ties). With kAnyHit, returns at
-/// the first hit. Counts the primitives tested in `counters` when kCount. The list holds no
-/// triangles, so each entry goes straight to the Geometry rather than through the common leaf
-/// test (intersect_references): inlining that test's triangle and sphere paths into the walk
-/// changed its register allocation and cost single-ray occlusion queries 11% more instructions
-/// (callgrind, bunny shadow rays), although they never run here.
+/// the first hit. Counts the primitives tested in `counters` when kCount. Spheres and cylinders
+/// are tested here, every other kind through the Geometry. The list holds no triangles, so it
+/// does not go through the common leaf test (intersect_references): inlining that test's triangle and sphere paths into
+/// the walk changed its register allocation and cost single-ray occlusion queries 11% more instructions (callgrind,
+/// bunny shadow rays), although they never run here. For the same reason this function, which tests spheres and
+/// cylinders itself, is kept out of line: inlined, it cost those queries 4% more instructions (31.7 M against 30.5 M
+/// out of line, `valgrind
+/// --tool=callgrind raylab bench bench/scenes/bunny-on-ground-triangles.json --rays shadow
+/// --against none --repeats 1 --width 256 --height 192`), on a scene without a sphere; marked
+/// cold as well, 7% more.
 template <bool kAnyHit, bool kCount, int W>
-inline bool intersect_wide_leaf_others(const WideBvhLeaves& leaves, const Geometry& geometry, std::uint32_t first,
-                                       std::uint32_t count_flags, const WatertightRay& tri_ray, const Ray& ray,
-                                       float tmin, float& tmax, Hit& best, TraversalCounters& counters) {
+[[gnu::noinline]] bool intersect_wide_leaf_others(const WideBvhLeaves& leaves, const Geometry& geometry,
+                                                  std::uint32_t first, std::uint32_t count_flags,
+                                                  const WatertightRay& tri_ray, const Ray& ray, float tmin, float& tmax,
+                                                  Hit& best, TraversalCounters& counters) {
   if (!leaf_has_others<W>(count_flags)) return false;
   bool found = false;
   const auto sphere_count = static_cast<std::uint32_t>(geometry.spheres.size());
