@@ -28,12 +28,20 @@ int main(int argc, char** argv) {
   app.formatter(std::make_shared<raylab::cli::WrappingFormatter>(
       static_cast<std::size_t>(raylab::terminal_columns(STDOUT_FILENO))));
   app.require_subcommand(1);
-  app.set_version_flag("--version",
-                       [] { return std::string("raylab ") + raylab::version() + "\n" + raylab::isa_summary(); });
   std::string isa;
   app.add_option("--isa", isa,
                  "Instruction set of the kernels: baseline, avx2 or avx512 (default: the widest this CPU "
                  "has, or RAYLAB_ISA); a lower one is for comparisons");
+  // After --isa, whose value CLI11 stores first, so that `raylab --isa avx2 --version` names it.
+  app.set_version_flag("--version", [&isa] {
+    const std::string head = std::string("raylab ") + raylab::version() + "\n";
+    try {
+      raylab::cli::choose_isa(isa);
+    } catch (const raylab::UsageError& e) {
+      return head + "kernels: none (" + e.what() + ")";
+    }
+    return head + raylab::isa_summary();
+  });
   // `raylab bench --isa avx2 ...` reaches the option above too.
   app.fallthrough();
   const raylab::cli::CommandRunner run_render = raylab::cli::add_render_command(app);

@@ -48,12 +48,10 @@ PYBIND11_MODULE(_raylab, m) {
   m.def(
       "set_isa",
       [](const std::string& isa) {
-        const auto parsed = raylab::parse_isa(isa);
-        if (!parsed) throw py::value_error("isa: '" + isa + "' is not one of 'baseline', 'avx2', 'avx512'");
         try {
-          raylab::set_isa(*parsed);
+          raylab::set_isa(raylab::usable_isa_named(isa, "isa: '" + isa + "'"));
         } catch (const std::invalid_argument& e) {
-          throw py::value_error(std::string("isa: ") + e.what());
+          throw py::value_error(e.what());
         }
       },
       py::arg("isa"), "Makes `isa` the instruction set of structures built from now on (for comparisons).");

@@ -11,7 +11,8 @@
 namespace raylab {
 namespace {
 
-// "bvh" is the wide BVH at the width this build tests natively (8 with AVX2, 16 with AVX-512);
+// "bvh" is the wide BVH at the width the active instruction set tests natively (16 with
+// AVX-512, else 8: native_box_width);
 // the explicit widths are there to compare them side by side.
 constexpr std::array<std::string_view, 11> kNames = {"bvh",   "bvh2",   "bvh4",      "bvh8",  "bvh16", "grid",
                                                      "grid2", "octree", "irregular", "brute", "embree"};

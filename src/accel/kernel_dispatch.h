@@ -39,13 +39,17 @@ decltype(auto) with_kernels(Isa isa, F&& f) {
 
 }  // namespace raylab
 
-// Instantiates Structure's single-ray kernel `traverse` under the set tag Tag, in the four forms
-// TraversalAccelerator calls.
-#define RAYLAB_INSTANTIATE_TRAVERSE_AS(Structure, Tag)                                     \
-  template bool Structure::traverse<false, false, Tag>(Ray&, Hit&, TraversalStats*) const; \
-  template bool Structure::traverse<true, false, Tag>(Ray&, Hit&, TraversalStats*) const;  \
-  template bool Structure::traverse<false, true, Tag>(Ray&, Hit&, TraversalStats*) const;  \
-  template bool Structure::traverse<true, true, Tag>(Ray&, Hit&, TraversalStats*) const
+// Structure's single-ray kernel `traverse` under the set tag Tag, in the four forms
+// TraversalAccelerator calls, each preceded by `Keywords`: `template` instantiates them,
+// `extern template` declares them compiled elsewhere.
+#define RAYLAB_TRAVERSE_FORMS(Keywords, Structure, Tag)                                    \
+  Keywords bool Structure::traverse<false, false, Tag>(Ray&, Hit&, TraversalStats*) const; \
+  Keywords bool Structure::traverse<true, false, Tag>(Ray&, Hit&, TraversalStats*) const;  \
+  Keywords bool Structure::traverse<false, true, Tag>(Ray&, Hit&, TraversalStats*) const;  \
+  Keywords bool Structure::traverse<true, true, Tag>(Ray&, Hit&, TraversalStats*) const
+
+// Instantiates Structure's kernel under the set tag Tag.
+#define RAYLAB_INSTANTIATE_TRAVERSE_AS(Structure, Tag) RAYLAB_TRAVERSE_FORMS(template, Structure, Tag)
 
 // In a kernel source: instantiates Structure's kernel for this translation unit's set.
 #define RAYLAB_INSTANTIATE_TRAVERSE(Structure) RAYLAB_INSTANTIATE_TRAVERSE_AS(Structure, KernelIsa)
@@ -53,11 +57,7 @@ decltype(auto) with_kernels(Isa isa, F&& f) {
 // Declares Structure's kernel for the set whose tag is Tag as compiled elsewhere (in that set's
 // kernel source): without it, the source that instantiates the entry points would compile its
 // own copy under the same name, with its own flags, and the linker could keep that one.
-#define RAYLAB_EXTERN_TRAVERSE(Structure, Tag)                                                    \
-  extern template bool Structure::traverse<false, false, Tag>(Ray&, Hit&, TraversalStats*) const; \
-  extern template bool Structure::traverse<true, false, Tag>(Ray&, Hit&, TraversalStats*) const;  \
-  extern template bool Structure::traverse<false, true, Tag>(Ray&, Hit&, TraversalStats*) const;  \
-  extern template bool Structure::traverse<true, true, Tag>(Ray&, Hit&, TraversalStats*) const
+#define RAYLAB_EXTERN_TRAVERSE(Structure, Tag) RAYLAB_TRAVERSE_FORMS(extern template, Structure, Tag)
 
 #ifdef RAYLAB_KERNELS_AVX2
 #define RAYLAB_EXTERN_TRAVERSE_AVX2(Structure) RAYLAB_EXTERN_TRAVERSE(Structure, isa_avx2::KernelIsa);

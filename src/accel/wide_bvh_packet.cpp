@@ -360,21 +360,24 @@ void WideBvh<W>::trace_packet(Ray* rays, Hit* hits, std::uint8_t* occluded_out, 
   });
 }
 
+// The packet kernels of the three widths under the set tag Tag, both queries, each preceded by
+// `Keywords` (as RAYLAB_TRAVERSE_FORMS).
+#define RAYLAB_PACKET_FORMS(Keywords, Tag)                                                   \
+  Keywords void WideBvh<4>::trace_packet<false, Tag>(Ray*, Hit*, std::uint8_t*, int) const;  \
+  Keywords void WideBvh<8>::trace_packet<false, Tag>(Ray*, Hit*, std::uint8_t*, int) const;  \
+  Keywords void WideBvh<16>::trace_packet<false, Tag>(Ray*, Hit*, std::uint8_t*, int) const; \
+  Keywords void WideBvh<4>::trace_packet<true, Tag>(Ray*, Hit*, std::uint8_t*, int) const;   \
+  Keywords void WideBvh<8>::trace_packet<true, Tag>(Ray*, Hit*, std::uint8_t*, int) const;   \
+  Keywords void WideBvh<16>::trace_packet<true, Tag>(Ray*, Hit*, std::uint8_t*, int) const
+
 #ifndef RAYLAB_KERNEL_VARIANT  // once, with the library's own flags (kernel_dispatch.h)
 // The packet kernels of the other sets, compiled in their own kernel sources (see
 // RAYLAB_EXTERN_TRAVERSE in kernel_dispatch.h for why they are declared).
-#define RAYLAB_EXTERN_PACKETS(Tag)                                                                  \
-  extern template void WideBvh<4>::trace_packet<false, Tag>(Ray*, Hit*, std::uint8_t*, int) const;  \
-  extern template void WideBvh<8>::trace_packet<false, Tag>(Ray*, Hit*, std::uint8_t*, int) const;  \
-  extern template void WideBvh<16>::trace_packet<false, Tag>(Ray*, Hit*, std::uint8_t*, int) const; \
-  extern template void WideBvh<4>::trace_packet<true, Tag>(Ray*, Hit*, std::uint8_t*, int) const;   \
-  extern template void WideBvh<8>::trace_packet<true, Tag>(Ray*, Hit*, std::uint8_t*, int) const;   \
-  extern template void WideBvh<16>::trace_packet<true, Tag>(Ray*, Hit*, std::uint8_t*, int) const
 #ifdef RAYLAB_KERNELS_AVX2
-RAYLAB_EXTERN_PACKETS(isa_avx2::KernelIsa);
+RAYLAB_PACKET_FORMS(extern template, isa_avx2::KernelIsa);
 #endif
 #ifdef RAYLAB_KERNELS_AVX512
-RAYLAB_EXTERN_PACKETS(isa_avx512::KernelIsa);
+RAYLAB_PACKET_FORMS(extern template, isa_avx512::KernelIsa);
 #endif
 
 template <int W>
@@ -421,11 +424,6 @@ template void WideBvh<16>::occluded(std::span<const Ray>, std::span<std::uint8_t
 #endif  // RAYLAB_KERNEL_VARIANT
 
 // The packet kernels, compiled here for this translation unit's instruction set.
-template void WideBvh<4>::trace_packet<false, KernelIsa>(Ray*, Hit*, std::uint8_t*, int) const;
-template void WideBvh<8>::trace_packet<false, KernelIsa>(Ray*, Hit*, std::uint8_t*, int) const;
-template void WideBvh<16>::trace_packet<false, KernelIsa>(Ray*, Hit*, std::uint8_t*, int) const;
-template void WideBvh<4>::trace_packet<true, KernelIsa>(Ray*, Hit*, std::uint8_t*, int) const;
-template void WideBvh<8>::trace_packet<true, KernelIsa>(Ray*, Hit*, std::uint8_t*, int) const;
-template void WideBvh<16>::trace_packet<true, KernelIsa>(Ray*, Hit*, std::uint8_t*, int) const;
+RAYLAB_PACKET_FORMS(template, KernelIsa);
 
 }  // namespace raylab

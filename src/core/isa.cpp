@@ -63,14 +63,7 @@ Isa widest_usable() {
 Isa isa_from_environment() {
   const char* value = std::getenv("RAYLAB_ISA");
   if (value == nullptr || *value == '\0') return widest_usable();
-  const std::optional<Isa> isa = parse_isa(value);
-  if (!isa) {
-    throw std::invalid_argument(std::string("RAYLAB_ISA=") + value +
-                                ": not an instruction set (expected baseline, avx2 or avx512)");
-  }
-  const std::string reason = isa_unusable_reason(*isa);
-  if (!reason.empty()) throw std::invalid_argument(std::string("RAYLAB_ISA=") + value + ": " + reason);
-  return *isa;
+  return usable_isa_named(value, std::string("RAYLAB_ISA=") + value);
 }
 
 }  // namespace
@@ -92,6 +85,14 @@ std::optional<Isa> parse_isa(std::string_view name) {
     if (name == isa_name(isa)) return isa;
   }
   return std::nullopt;
+}
+
+Isa usable_isa_named(std::string_view name, const std::string& source) {
+  const std::optional<Isa> isa = parse_isa(name);
+  if (!isa) throw std::invalid_argument(source + ": not an instruction set (expected baseline, avx2 or avx512)");
+  const std::string reason = isa_unusable_reason(*isa);
+  if (!reason.empty()) throw std::invalid_argument(source + ": " + reason);
+  return *isa;
 }
 
 std::vector<Isa> built_isas() {
@@ -131,8 +132,7 @@ Isa active_isa() {
 }
 
 void set_isa(Isa isa) {
-  const std::string reason = isa_unusable_reason(isa);
-  if (!reason.empty()) throw std::invalid_argument(std::string("instruction set ") + isa_name(isa) + ": " + reason);
+  usable_isa_named(isa_name(isa), std::string("instruction set ") + isa_name(isa));  // throws when unusable
   g_active.store(static_cast<int>(isa), std::memory_order_release);
 }
 

@@ -19,6 +19,10 @@ TEST_F(Cli, VersionNamesTheActiveSetAndEveryForcedOne) {
     const std::string name = isa_name(isa);
     const CliResult by_option = run("--isa " + name + " --version");
     EXPECT_EQ(by_option.code, 0) << by_option.err;
+    EXPECT_NE(by_option.out.find("kernels: " + name + " (built: "), std::string::npos) << by_option.out;
+    const CliResult bench = run("bench demo --against none --repeats 1 --width 8 --height 8 --isa " + name);
+    EXPECT_EQ(bench.code, 0) << bench.err;
+    EXPECT_NE(bench.out.find("our kernels: " + name + "\n"), std::string::npos) << bench.out;
     const CliResult by_variable = run("--version", "RAYLAB_ISA=" + name);
     EXPECT_EQ(by_variable.code, 0) << by_variable.err;
     EXPECT_NE(by_variable.out.find("kernels: " + name + " (built: "), std::string::npos) << by_variable.out;

@@ -27,6 +27,11 @@ const char* isa_name(Isa isa);
 /// The set named `name` ("baseline", "avx2", "avx512"), or nothing for any other text.
 std::optional<Isa> parse_isa(std::string_view name);
 
+/// The set named `name`, checked for use here. Throws std::invalid_argument, its message starting
+/// with `source` (where the name came from, such as "--isa avx512" or "RAYLAB_ISA=avx512"), when
+/// `name` names no set or one this build or CPU cannot run.
+Isa usable_isa_named(std::string_view name, const std::string& source);
+
 /// The sets this library was built with, in order (always at least one).
 std::vector<Isa> built_isas();
 
