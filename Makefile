@@ -36,7 +36,7 @@ bench: configure
 FUZZ_SECONDS ?= 60
 fuzz: deps
 	cmake --preset fuzz
-	cmake --build build/fuzz -j $(JOBS)
+	cmake --build build/fuzz --target raylab_fuzz_targets -j $(JOBS)
 	bash scripts/fuzz.sh build/fuzz $(FUZZ_SECONDS)
 
 format:
