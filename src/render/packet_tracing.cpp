@@ -10,7 +10,8 @@ int packet_block_side(int spp) {
   return 1;
 }
 
-PrimaryPacketTracer::PrimaryPacketTracer(const TraceContext& ctx) : m_ctx(ctx) {
+PrimaryPacketTracer::PrimaryPacketTracer(const TraceContext& ctx, bool replace_nonfinite)
+    : m_ctx(ctx), m_replace_nonfinite(replace_nonfinite) {
   const std::vector<Light>& lights = ctx.scene.lights;
   for (std::size_t l = 0; l < lights.size(); ++l) {
     if (WhittedIntegrator::is_single_sample(lights[l])) m_single_lights.push_back(l);
@@ -42,12 +43,12 @@ void PrimaryPacketTracer::trace(std::span<const Ray> rays, std::span<const std::
 
   for (std::size_t i = 0; i < n; ++i) {
     if (!m_hits[i].valid()) {
-      out[i] = finite_radiance(m_ctx, WhittedIntegrator::background(scene.settings, m_rays[i].direction));
+      out[i] = handed_on(WhittedIntegrator::background(scene.settings, m_rays[i].direction));
       continue;
     }
     Pcg32 rng(seeds[i]);
     const std::span<const ShadowAnswer> answers(m_answers.data() + i * light_count, light_count);
-    out[i] = finite_radiance(m_ctx, WhittedIntegrator::shade(m_ctx, m_rays[i], m_surfaces[i], 1, rng, answers));
+    out[i] = handed_on(WhittedIntegrator::shade(m_ctx, m_rays[i], m_surfaces[i], 1, rng, answers));
   }
 }
 

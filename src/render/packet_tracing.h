@@ -32,8 +32,11 @@ int packet_block_side(int spp);
 /// packet to the next; one per worker task (not thread-safe).
 class PrimaryPacketTracer {
  public:
-  /// A tracer for `ctx` (whose scene must not change while the tracer lives).
-  explicit PrimaryPacketTracer(const TraceContext& ctx);
+  /// A tracer for `ctx` (whose scene must not change while the tracer lives). With
+  /// `replace_nonfinite` a NaN or infinite radiance becomes black and is counted (as the pixel
+  /// loops' finite_radiance does); without it the value is handed on as it is (the SPD protocol,
+  /// whose single-ray loop keeps the integrator's value).
+  explicit PrimaryPacketTracer(const TraceContext& ctx, bool replace_nonfinite = true);
 
   /// Radiance along each of `rays` (primary rays, at most kPacketSize), into `out`; lane i draws
   /// its random numbers from Pcg32(seeds[i]). Counts every ray it casts in ctx.stats. With
@@ -46,7 +49,11 @@ class PrimaryPacketTracer {
   // `light`, stored as each lane's ShadowAnswer for that light.
   void trace_shadows(std::size_t light, std::size_t lanes);
 
+  // The radiance `c` of a lane as it is handed on (see replace_nonfinite).
+  Color handed_on(Color c) const { return m_replace_nonfinite ? finite_radiance(m_ctx, c) : c; }
+
   const TraceContext& m_ctx;
+  bool m_replace_nonfinite;
   std::vector<std::size_t> m_single_lights;  // indices of the lights whose shadow rays go as packets
   std::array<Ray, kPacketSize> m_rays;
   std::array<Hit, kPacketSize> m_hits;

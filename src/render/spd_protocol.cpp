@@ -7,11 +7,14 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
 #include <vector>
 
+#include "packet_tracing.h"
 #include "raylab/render/camera.h"
 #include "raylab/render/whitted.h"
 #include "raylab/sampling/seed_salts.h"
@@ -64,20 +67,39 @@ SpdProtocolResult render_spd_protocol(Scene& scene, const Accelerator& accel, Fi
   const int threads = usable_threads(options.threads);
   tbb::task_arena arena(threads);
   const auto start = std::chrono::steady_clock::now();
+  // Corners go to the accelerator as packets of kBlock x kBlock (the pixel loops' 4 x 4 blocks),
+  // each corner shaded with the generator and the arithmetic of a single ray, so the image and
+  // the ray counts are those of tracing the corners one by one.
+  constexpr int kBlock = 4;
+  static_assert(kBlock * kBlock <= detail::kPacketSize);
+  const int block_rows = (corners + kBlock - 1) / kBlock;
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, corners, 1), [&](const tbb::blocked_range<int>& rows) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, block_rows, 1), [&](const tbb::blocked_range<int>& range) {
       RenderStats& stats = thread_stats.local();
       const TraceContext ctx{scene, accel, stats, options.count_traversal, facing};
-      for (int y = rows.begin(); y != rows.end(); ++y) {
-        for (int x = 0; x < corners; ++x) {
-          // SPD scenes have point lights only; the generator is there for area lights, seeded
-          // by the corner so the image is the same for any thread count.
-          Pcg32 rng(hash_seed(settings.seed ^ kUnsaltedSeed, static_cast<std::uint64_t>(y) * corners + x));
-          const Ray ray = camera.generate(static_cast<float>(x), static_cast<float>(y));
-          corner[static_cast<std::size_t>(y) * corners + x] =
-              WhittedIntegrator::trace(ctx, ray, 1, RayKind::kPrimary, rng);
+      detail::PrimaryPacketTracer tracer(ctx, /*replace_nonfinite=*/false);
+      std::array<Ray, detail::kPacketSize> rays;
+      std::array<std::uint64_t, detail::kPacketSize> seeds;
+      std::array<std::size_t, detail::kPacketSize> slots;
+      std::array<Color, detail::kPacketSize> colors;
+      for (int block = range.begin(); block != range.end(); ++block) {
+        const int y0 = block * kBlock, y1 = std::min(y0 + kBlock, corners);
+        for (int x0 = 0; x0 < corners; x0 += kBlock) {
+          std::size_t count = 0;
+          for (int y = y0; y < y1; ++y) {
+            for (int x = x0; x < std::min(x0 + kBlock, corners); ++x) {
+              // SPD scenes have point lights only; the generator is there for area lights,
+              // seeded by the corner so the image is the same for any thread count.
+              slots[count] = static_cast<std::size_t>(y) * corners + x;
+              seeds[count] = hash_seed(settings.seed ^ kUnsaltedSeed, slots[count]);
+              rays[count++] = camera.generate(static_cast<float>(x), static_cast<float>(y));
+            }
+          }
+          tracer.trace(std::span<const Ray>(rays.data(), count), std::span<const std::uint64_t>(seeds.data(), count),
+                       std::span<Color>(colors.data(), count));
+          for (std::size_t k = 0; k < count; ++k) corner[slots[k]] = colors[k];
         }
-        const int done = rows_done.fetch_add(1, std::memory_order_relaxed) + 1;
+        const int done = rows_done.fetch_add(y1 - y0, std::memory_order_relaxed) + (y1 - y0);
         if (options.on_progress) options.on_progress(done, corners);
       }
     });
