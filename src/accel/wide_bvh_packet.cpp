@@ -90,11 +90,16 @@ PacketInterval<W> packet_interval(const float (&origin)[3][kPacketSize], const f
     o_hi.store(lanes[1]);
     i_lo.store(lanes[2]);
     i_hi.store(lanes[3]);
-    for (int k = 0; k < 4; ++k) {
-      bound[k][a] = lanes[k][0];
-      for (int i = 1; i < kRayLanes; ++i) {
-        bound[k][a] = (k % 2 == 0) ? std::min(bound[k][a], lanes[k][i]) : std::max(bound[k][a], lanes[k][i]);
-      }
+    // One loop per bound, no choice inside: this runs for every packet.
+    bound[0][a] = lanes[0][0];
+    bound[1][a] = lanes[1][0];
+    bound[2][a] = lanes[2][0];
+    bound[3][a] = lanes[3][0];
+    for (int i = 1; i < kRayLanes; ++i) {
+      bound[0][a] = std::min(bound[0][a], lanes[0][i]);
+      bound[1][a] = std::max(bound[1][a], lanes[1][i]);
+      bound[2][a] = std::min(bound[2][a], lanes[2][i]);
+      bound[3][a] = std::max(bound[3][a], lanes[3][i]);
     }
   }
   interval.valid = ok;
@@ -132,14 +137,21 @@ constexpr int kRayParallelLeaf = 4;
 /// the packet's interval test alone: their interval is nearly as tight as each ray's own test.
 constexpr float kCoherentCosine = 0.98f;
 
-/// Whether the directions of `rays[0..n)` all lie within kCoherentCosine of the first.
-bool directions_coherent(const Ray* rays, int n) {
-  const Vec3 d0 = rays[0].direction;
-  const float d0_sq = dot(d0, d0);
-  for (int i = 1; i < n; ++i) {
-    const Vec3 d = rays[i].direction;
-    const float c = dot(d, d0);
-    if (!(c > 0.f && c * c >= kCoherentCosine * kCoherentCosine * dot(d, d) * d0_sq)) return false;
+/// Whether the directions of all kPacketSize lanes (`direction[axis][lane]`; unused lanes repeat
+/// lane 0) lie within kCoherentCosine of lane 0's, tested lane-parallel.
+bool directions_coherent(const float (&direction)[3][kPacketSize]) {
+  using L = simd::WideFloat<kRayLanes>;
+  constexpr unsigned kAll = (1u << kRayLanes) - 1u;
+  const float x0 = direction[0][0], y0 = direction[1][0], z0 = direction[2][0];
+  const L d0x = L::broadcast(x0), d0y = L::broadcast(y0), d0z = L::broadcast(z0);
+  const L bound = L::broadcast(kCoherentCosine * kCoherentCosine * (x0 * x0 + y0 * y0 + z0 * z0));
+  const L zero = L::broadcast(0.f);
+  for (int g = 0; g < kPacketSize / kRayLanes; ++g) {
+    const int o = g * kRayLanes;
+    const L dx = L::load(direction[0] + o), dy = L::load(direction[1] + o), dz = L::load(direction[2] + o);
+    const L c = dx * d0x + dy * d0y + dz * d0z;
+    const L length_sq = dx * dx + dy * dy + dz * dz;
+    if ((less_mask(zero, c) & less_equal_mask(bound * length_sq, c * c)) != kAll) return false;
   }
   return true;
 }
@@ -162,35 +174,40 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
   constexpr int kNear[3] = {(kOctant & 1) ? 1 : 0, (kOctant & 2) ? 1 : 0, (kOctant & 4) ? 1 : 0};
   // Per-lane state, as structure of arrays for the box tests across rays (unused lanes copy
   // ray 0 and stay inactive), and per ray for the single-ray leaf tests.
-  alignas(64) float origin[3][kPacketSize], inv[3][kPacketSize], tmin[kPacketSize], tmax[kPacketSize];
+  alignas(64) float origin[3][kPacketSize], direction[3][kPacketSize], inv[3][kPacketSize], tmin[kPacketSize],
+      tmax[kPacketSize];
   WatertightRay tri_rays[kPacketSize];
   Hit best[kPacketSize];
-  float tmin_lo = INFINITY;
-  std::uint32_t found = 0, alive = 0;
   for (int i = 0; i < kPacketSize; ++i) {
     const Ray& r = rays[i < n ? i : 0];
     for (int a = 0; a < 3; ++a) {
       origin[a][i] = r.origin[a];
-      inv[a][i] = 1.f / r.direction[a];  // exactly as the single-ray box test computes it
+      direction[a][i] = r.direction[a];
     }
     tmin[i] = r.tmin;
     tmax[i] = r.tmax;
-    tri_rays[i] = i < n ? WatertightRay(r) : tri_rays[0];
-    if (i >= n) continue;
+  }
+  // Exactly as the single-ray box test computes them (a correctly rounded division either way).
+  for (int a = 0; a < 3; ++a) {
+    for (int o = 0; o < kPacketSize; o += kRayLanes) (L::broadcast(1.f) / L::load(direction[a] + o)).store(inv[a] + o);
+  }
+  float tmin_lo = INFINITY;
+  std::uint32_t found = 0, alive = 0;
+  bool same_axes = true;  // rays that share the watertight test's axis permutation
+  for (int i = 0; i < n; ++i) {
+    const Ray& r = rays[i];
+    tri_rays[i] = WatertightRay(r);
+    // kx and ky decide kz (the three are a permutation).
+    same_axes = same_axes && tri_rays[i].kx == tri_rays[0].kx && tri_rays[i].ky == tri_rays[0].ky;
     best[i] = kAnyHit ? Hit{} : hits[i];
     tmin_lo = std::min(tmin_lo, r.tmin);
     // A ray with an empty or NaN interval, or no traceable direction, takes no part (the
     // single-ray entry points answer it with a miss too).
     if (r.tmin <= r.tmax && traceable_direction(r.direction)) alive |= 1u << i;
   }
+  for (int i = n; i < kPacketSize; ++i) tri_rays[i] = tri_rays[0];
   const PacketInterval<W> interval = packet_interval<W, kOctant>(origin, inv, tmin_lo);
-  const bool coherent = !kAnyHit && interval.valid && directions_coherent(rays, n);
-  // Rays that share the watertight test's axis permutation can be tested ray-parallel.
-  bool same_axes = true;
-  for (int i = 1; i < n; ++i) {
-    same_axes = same_axes && tri_rays[i].kx == tri_rays[0].kx && tri_rays[i].ky == tri_rays[0].ky &&
-                tri_rays[i].kz == tri_rays[0].kz;
-  }
+  const bool coherent = !kAnyHit && interval.valid && directions_coherent(direction);
   WatertightRays<kRayLanes> group_rays[kGroups];
   if (same_axes) {
     for (int g = 0; g < kGroups; ++g) group_rays[g] = watertight_rays<kRayLanes>(tri_rays + g * kRayLanes);
