@@ -1,5 +1,6 @@
 #include "raylab/geometry/cylinder.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace raylab {
@@ -17,6 +18,11 @@ CylinderFrame cylinder_frame(const Cylinder& cyl) {
   f.wy = axis.y / f.h;
   f.wz = axis.z / f.h;
   f.k = (double(cyl.apex_radius) - cyl.base_radius) / f.h;
+  f.axis = {static_cast<float>(f.wx), static_cast<float>(f.wy), static_cast<float>(f.wz)};
+  // A cone flatter than 45 degrees keeps the rejection off: the double test's root near a
+  // tangency beyond the height range is only good to about 1e-8 of the scale, and the margin
+  // (below) over 1 + |k| must stay far above that.
+  f.reject_radius = std::fabs(f.k) <= 1.0 ? std::max(std::fabs(cyl.base_radius), std::fabs(cyl.apex_radius)) : INFINITY;
   return f;
 }
 
@@ -24,7 +30,50 @@ bool intersect_cylinder(const Cylinder& cyl, const Ray& ray, float tmin, float t
   return intersect_cylinder(cylinder_frame(cyl), ray, tmin, tmax, t, height);
 }
 
+// The rejection, and why its margin is safe. With f = origin - base, the line's distance from the
+// axis is D = |f . n| / |n|, n = d x w. In float, f carries a relative error of one rounding, and
+// each component of n an absolute one of about 3 eps |d| (w itself is rounded once), so |n| is
+// off by at most 5.2 eps |d|. Only lines at least kMinSine off the axis are judged, where
+// |n| >= 0.1 |d|: n's relative error is then at most 52 eps, and f . n's absolute one about
+// eps |f| (4 |n| + 5.2 |d|) <= 56 eps |f| |n|. So the float D is within 60 eps (|f| + D) of the
+// exact one, about 3.6e-6 (|f| + D). The margin, kMargin (|f|_1 + R) with |f|_1 >= |f|, is ten
+// times that. These bounds hold in float's normal range, which the magnitude checks keep to.
+//
+// A line beyond R plus the margin meets the frustum nowhere in its height range (every point
+// there is farther than R from the axis, and no radius in the range exceeds R), so the exact
+// answer is a miss. The double test could still accept a root of the infinite cone just outside
+// the range if its own error in the height s reached the distance to the range, which is at
+// least margin / |k|: with |k| <= 1 (the frame turns the rejection off otherwise) that is
+// 4e-5 |f|, against the double root's error of 1e-16 of the scale, or 1.5e-8 near a tangency.
+// So every ray rejected here is a ray the double test rejects: the answers are the double test's,
+// bit for bit.
+constexpr float kMinSine = 0.1f;
+constexpr float kMargin = 4e-5f;
+
+bool cylinder_surely_missed(const CylinderFrame& frame, const Ray& ray) {
+  const Vec3 d = ray.direction;
+  const float d_sq = dot(d, d);
+  // Comparisons are false on NaN: such rays are never rejected here.
+  if (!(d_sq >= 1e-12f && d_sq <= 1e12f)) return false;
+  const Vec3 n = cross(d, frame.axis);
+  const float n_sq = dot(n, n);
+  if (!(n_sq >= kMinSine * kMinSine * d_sq)) return false;
+  const Vec3 f = ray.origin - frame.base;
+  const float along_n = dot(f, n);
+  const float reach =
+      frame.reject_radius + kMargin * (std::fabs(f.x) + std::fabs(f.y) + std::fabs(f.z) + frame.reject_radius);
+  const float far_sq = along_n * along_n;
+  // far_sq normal and finite: no underflow or overflow took the bounds away.
+  return far_sq > reach * reach * n_sq && far_sq >= 1e-30f && far_sq <= 1e30f;
+}
+
 bool intersect_cylinder(const CylinderFrame& frame, const Ray& ray, float tmin, float tmax, float& t, float& height) {
+  if (cylinder_surely_missed(frame, ray)) return false;
+  return intersect_cylinder_exact(frame, ray, tmin, tmax, t, height);
+}
+
+bool intersect_cylinder_exact(const CylinderFrame& frame, const Ray& ray, float tmin, float tmax, float& t,
+                              float& height) {
   const double h = frame.h;
   if (h == 0.0) return false;
   const double wx = frame.wx, wy = frame.wy, wz = frame.wz, k = frame.k;

@@ -506,7 +506,7 @@ void check_accelerator(const Geometry& g, const BvhConfig& config, const BvhTree
   EXPECT_EQ(info.leaf_count, tree.leaf_count);
   EXPECT_EQ(info.primitive_count, tree.prim_ids.size());
   EXPECT_EQ(info.memory_bytes, info.node_count * W * 32 + wide.leaves.blocks.size() * 160 +
-                                   wide.leaves.others.size() * 4 + held.leaves.cylinder_frames.size() * 56);
+                                   wide.leaves.others.size() * 4 + held.leaves.cylinder_frames.size() * 72);
   EXPECT_EQ(info.max_depth, wide.max_depth);
   EXPECT_GE(info.build_seconds, 0.0);
   if (!tree.prim_ids.empty()) {
@@ -887,7 +887,7 @@ TYPED_TEST(WideBvhTest, CylinderFramesCoverTheTreesCylinders) {
   const auto first = static_cast<std::uint32_t>(g.triangles.size() + g.spheres.size());
   const auto same = [](const CylinderFrame& a, const CylinderFrame& b) {
     return a.base == b.base && a.base_radius == b.base_radius && a.wx == b.wx && a.wy == b.wy && a.wz == b.wz &&
-           a.h == b.h && a.k == b.k;
+           a.h == b.h && a.k == b.k && a.axis == b.axis && a.reject_radius == b.reject_radius;
   };
   const WideBvh<W> whole(g);
   const WideBvhLeaves& leaves = whole.tree().leaves;
