@@ -36,8 +36,9 @@ bool intersect_cylinder(const Cylinder& cyl, const Ray& ray, float tmin, float t
 // off by at most 5.2 eps |d|. Only lines at least kMinSine off the axis are judged, where
 // |n| >= 0.1 |d|: n's relative error is then at most 52 eps, and f . n's absolute one about
 // eps |f| (4 |n| + 5.2 |d|) <= 56 eps |f| |n|. So the float D is within 60 eps (|f| + D) of the
-// exact one, about 3.6e-6 (|f| + D). The margin, kMargin (|f|_1 + R) with |f|_1 >= |f|, is ten
-// times that. These bounds hold in float's normal range, which the magnitude checks keep to.
+// exact one, about 3.6e-6 (|f| + D), and D <= |f| (the base lies on the axis), so within
+// 7.2e-6 |f|. The margin, kMargin (|f|_1 + R) with |f|_1 >= |f|, is more than five times that.
+// These bounds hold in float's normal range, which the magnitude checks keep to.
 //
 // A line beyond R plus the margin meets the frustum nowhere in its height range (every point
 // there is farther than R from the axis, and no radius in the range exceeds R), so the exact
