@@ -90,6 +90,20 @@ TEST(Sphere, FarAwaySphereKeepsRelativeAccuracy) {
   }
 }
 
+TEST(Sphere, LongDirectionAgainstHugeSphereDoesNotOverflow) {
+  // |d|^2 = 1e18 times (radius^2 - distance^2) = 9e20 overflows float; the hit is still at
+  // (6e10 - 3e10) / 1e9 = 30 and the far side at 90, never a false hit at t = 0.
+  const Sphere s{{0.f, 0.f, 0.f}, 3e10f};
+  const Ray r{{-6e10f, 0.f, 0.f}, 0.f, {1e9f, 0.f, 0.f}};
+  float t = -1.f;
+  ASSERT_TRUE(intersect_sphere(s, r, 0.f, kInf, t));
+  EXPECT_NEAR(t, 30.f, 30.f * 1e-5f);
+  ASSERT_TRUE(intersect_sphere(s, r, 31.f, kInf, t));
+  EXPECT_NEAR(t, 90.f, 90.f * 1e-5f);
+  // Beside the sphere by more than its radius: no hit, however large the numbers.
+  EXPECT_FALSE(intersect_sphere(s, Ray{{-6e10f, 3.1e10f, 0.f}, 0.f, {1e9f, 0.f, 0.f}}, 0.f, kInf, t));
+}
+
 // ---------------------------------------------------------------------------------------------
 // Triangles
 

@@ -29,9 +29,14 @@ inline bool intersect_sphere(const Sphere& s, const Ray& ray, float tmin, float 
   const float b = dot(f, d);  // half of the usual b
   const float c = dot(f, f) - s.radius * s.radius;
   const Vec3 l = f - d * (b / a);  // foot of the perpendicular from the centre, relative to it
-  const float disc = a * (s.radius * s.radius - dot(l, l));
+  const float h = s.radius * s.radius - dot(l, l);
+  const float disc = a * h;
   if (!(disc >= 0.f)) return false;
-  const float q = -b - std::copysign(std::sqrt(disc), b);
+  // The product overflows for long directions against huge spheres (|d| = 1e9, radius 3e10):
+  // an infinite root would make q infinite and put a false hit at t = c / q = 0. The factors'
+  // roots are finite where the product's is (each at most about 1.8e19).
+  const float root = std::isinf(disc) ? std::sqrt(a) * std::sqrt(h) : std::sqrt(disc);
+  const float q = -b - std::copysign(root, b);
   float t0 = c / q;
   float t1 = q / a;
   if (t0 > t1) std::swap(t0, t1);
