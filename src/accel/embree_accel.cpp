@@ -39,6 +39,10 @@
 //   little above tmax), a filter on the triangles keeps a candidate only when our exact test hits
 //   that triangle within [tmin, tmax), and the hit returned carries our test's t, u and v. The
 //   user callbacks are given the real tmin and tmax through the query context.
+// - Edges: both tests are watertight, but they may give a shared edge to different triangles.
+//   Where Embree offers the one our test misses, our neighbour may never be offered, and the hit
+//   would be lost; the filter notices (our test misses that candidate at every distance) and the
+//   query is answered by brute force. Seen on random closed meshes with far origins; rare.
 // - Ties: Embree resolves equal distances between its own primitives in traversal order, not by
 //   our lower-id rule; the user callbacks do apply the rule against the closest hit so far.
 // - Rays Embree cannot take (NaN, infinite or huge components beyond its 1.844e18, tmin < 0) are
@@ -120,6 +124,9 @@ struct QueryContext {
   float tmin;                 ///< the caller's tmin (Embree sees a float a little below it)
   float tmax;                 ///< the caller's tmax (Embree sees the float below it)
   std::uint32_t incoming_id;  ///< the caller's closest hit so far, kInvalidId if none
+  /// Set by the filter when Embree offered a triangle our test misses at every distance: then
+  /// a neighbour across a shared edge may be the one our test hits, which Embree need not offer.
+  mutable bool disagreed = false;
 };
 static_assert(std::is_standard_layout_v<QueryContext>, "the context is recovered from its first member");
 
@@ -201,18 +208,22 @@ bool exact_triangle_hit(const SceneIds& ids, std::uint32_t id, const Ray& ray, f
 }
 
 // Keeps Embree's candidate triangle hits that our exact test confirms within the caller's
-// [tmin, tmax).
+// [tmin, tmax). A candidate our test misses at every distance is a disagreement about which
+// side of an edge the ray passes (Embree's robust test and our tie rule can give a shared edge
+// to different triangles, seen with far origins): the query is marked, and answered again by
+// brute force, because the neighbour our test would hit may never be offered.
 void keep_exact_hits(const RTCFilterFunctionNArguments* args) {
   const auto& ids = *static_cast<const SceneIds*>(args->geometryUserPtr);
   const QueryContext& query = query_of(args->context);
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] == 0) continue;
     const Ray ray = ray_of(args->ray, args->N);
+    const std::uint32_t id = ids.triangles[RTCHitN_primID(args->hit, args->N, i)];
     Hit hit;
-    if (!exact_triangle_hit(ids, ids.triangles[RTCHitN_primID(args->hit, args->N, i)], ray, query.tmin, query.tmax,
-                            hit)) {
-      args->valid[i] = 0;
-    }
+    if (exact_triangle_hit(ids, id, ray, query.tmin, query.tmax, hit)) continue;
+    args->valid[i] = 0;
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    if (!exact_triangle_hit(ids, id, ray, -kInf, kInf, hit)) query.disagreed = true;
   }
 }
 
@@ -377,6 +388,7 @@ bool EmbreeAccel::intersect(Ray& ray, Hit& hit) const {
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(m_scene, &query.embree, &rh);
+  if (query.disagreed) return m_untraceable.intersect(ray, hit);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
   if (rh.hit.geomID == m_ids.triangle_geom) {
     // The distance and barycentrics of our own test (which the filter has confirmed).
@@ -400,7 +412,8 @@ bool EmbreeAccel::occluded(const Ray& ray) const {
   query.incoming_id = kInvalidId;
   RTCRay r = embree_ray(ray);
   rtcOccluded1(m_scene, &query.embree, &r);
-  return r.tfar == -std::numeric_limits<float>::infinity();
+  if (r.tfar == -std::numeric_limits<float>::infinity()) return true;
+  return query.disagreed ? m_untraceable.occluded(ray) : false;
 }
 
 AccelInfo EmbreeAccel::info() const {
