@@ -85,6 +85,27 @@ TEST(Float4, ScalarAndSimdAgreeBitForBit) {
   }
 }
 
+// sqrt and copysign, lane by lane against std::sqrt and std::copysign, on random and special
+// values: both implementations bit for bit (the sphere blocks rely on it).
+TEST(Float4, SqrtAndCopysignMatchTheStandardLibrary) {
+  Pcg32 rng(77, 3);
+  const auto& special = special_values();
+  for (int iter = 0; iter < 20000 && !HasFailure(); ++iter) {
+    Lanes a = random_lanes(rng), b = random_lanes(rng);
+    if (iter < int(special.size())) a[0] = special[iter], b[1] = special[iter], a[2] = -special[iter];
+    const Lanes sq_s = lanes(sqrt(make<sc::Float4>(a))), sq_v = lanes(sqrt(make<simd::Float4>(a)));
+    const Lanes cs_s = lanes(copysign(make<sc::Float4>(a), make<sc::Float4>(b)));
+    const Lanes cs_v = lanes(copysign(make<simd::Float4>(a), make<simd::Float4>(b)));
+    for (int i = 0; i < 4; ++i) {
+      const volatile float x = a[i], y = b[i];
+      EXPECT_TRUE(same_arith(sq_s[i], std::sqrt(x))) << "sqrt(" << a[i] << ")";
+      EXPECT_TRUE(same_arith(sq_v[i], std::sqrt(x))) << "sqrt(" << a[i] << ")";
+      EXPECT_EQ(bits(cs_s[i]), bits(std::copysign(x, y))) << "copysign(" << a[i] << ", " << b[i] << ")";
+      EXPECT_EQ(bits(cs_v[i]), bits(std::copysign(x, y))) << "copysign(" << a[i] << ", " << b[i] << ")";
+    }
+  }
+}
+
 // Every pair of special values, in every lane.
 TEST(Float4, SpecialValuePairs) {
   const auto& v = special_values();

@@ -9,6 +9,7 @@
 /// the SECOND operand is returned. Kernels rely on it to ignore NaN slab distances, by passing
 /// the running value second.
 
+#include <cmath>
 #include <cstring>
 
 #include "raylab/simd/isa_namespace.h"
@@ -50,6 +51,16 @@ inline Float4 operator+(const Float4& a, const Float4& b) {
 }
 inline Float4 operator/(const Float4& a, const Float4& b) {
   return {{a.v[0] / b.v[0], a.v[1] / b.v[1], a.v[2] / b.v[2], a.v[3] / b.v[3]}};
+}
+/// Lane-wise correctly rounded square root (NaN below zero, as std::sqrt).
+inline Float4 sqrt(const Float4& a) {
+  return {{std::sqrt(a.v[0]), std::sqrt(a.v[1]), std::sqrt(a.v[2]), std::sqrt(a.v[3])}};
+}
+/// Lane-wise the magnitude of `magnitude` with the sign bit of `sign` (std::copysign).
+inline Float4 copysign(const Float4& magnitude, const Float4& sign) {
+  Float4 r;
+  for (int i = 0; i < 4; ++i) r.v[i] = std::copysign(magnitude.v[i], sign.v[i]);
+  return r;
 }
 /// Lane-wise a < b ? a : b (so b when either is NaN).
 inline Float4 min(const Float4& a, const Float4& b) {
@@ -103,6 +114,13 @@ inline Float4 operator-(Float4 a, Float4 b) { return {_mm_sub_ps(a.v, b.v)}; }
 inline Float4 operator*(Float4 a, Float4 b) { return {_mm_mul_ps(a.v, b.v)}; }
 inline Float4 operator+(Float4 a, Float4 b) { return {_mm_add_ps(a.v, b.v)}; }
 inline Float4 operator/(Float4 a, Float4 b) { return {_mm_div_ps(a.v, b.v)}; }
+/// Lane-wise correctly rounded square root: SQRTPS.
+inline Float4 sqrt(Float4 a) { return {_mm_sqrt_ps(a.v)}; }
+/// Lane-wise the magnitude of `magnitude` with the sign bit of `sign` (std::copysign).
+inline Float4 copysign(Float4 magnitude, Float4 sign) {
+  const __m128 sign_bit = _mm_set1_ps(-0.f);
+  return {_mm_or_ps(_mm_andnot_ps(sign_bit, magnitude.v), _mm_and_ps(sign_bit, sign.v))};
+}
 /// Lane-wise a < b ? a : b (so b when either is NaN): MINPS.
 inline Float4 min(Float4 a, Float4 b) { return {_mm_min_ps(a.v, b.v)}; }
 /// Lane-wise a > b ? a : b (so b when either is NaN): MAXPS.
