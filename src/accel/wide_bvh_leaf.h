@@ -10,6 +10,8 @@
 
 #include "leaf_test.h"
 #include "raylab/accel/wide_bvh.h"
+#include "raylab/core/float_neighbour.h"
+#include "raylab/geometry/sphere_lanes.h"
 #include "raylab/simd/isa_namespace.h"
 #include "raylab/simd/wide_float.h"
 #include "traversal_common.h"
@@ -31,40 +33,88 @@ inline bool leaf_has_others(std::uint32_t count_flags) {
   return (count_flags & WideBvhNode<W>::kLeafHasOthers) != 0;
 }
 
+/// Tests the spheres `ids` (a run of a leaf's list in `leaves.others`) four lanes at a time from
+/// the leaves' sphere lanes, with intersect_wide_leaf_others' contract. Each group of lanes is
+/// tested up to the largest limit the tie rule may apply, then the rule is applied lane by lane
+/// in list order, which gives what testing the spheres one by one gives (intersect_sphere_lanes).
+template <bool kAnyHit>
+[[gnu::always_inline]] inline bool intersect_leaf_spheres(const WideBvhLeaves& leaves,
+                                                          std::span<const std::uint32_t> ids, const Ray& ray,
+                                                          float tmin, float& tmax, Hit& best) {
+  const auto at = static_cast<std::size_t>(ids.data() - leaves.others.data());
+  const auto n = static_cast<std::uint32_t>(ids.size());
+  bool found = false;
+  for (std::uint32_t k = 0; k < n; k += 4) {
+    const int lanes = n - k >= 4 ? 0xF : (1 << (n - k)) - 1;
+    alignas(16) float t[4];
+    int mask = intersect_sphere_lanes(leaves.sphere_lanes_at(at + k), lanes, ray, tmin,
+                                      kAnyHit ? tmax : next_float_up(tmax), t);
+    if constexpr (kAnyHit) {
+      if (mask != 0) return true;
+      continue;
+    }
+    while (mask != 0) {
+      const int i = std::countr_zero(static_cast<unsigned>(mask));
+      mask &= mask - 1;
+      const std::uint32_t id = ids[k + i];
+      if (t[i] < best.tie_limit(id, tmax)) {
+        tmax = t[i];
+        best = Hit{t[i], id, 0.f, 0.f};
+        found = true;
+      }
+    }
+  }
+  return found;
+}
+
 /// Tests the primitives of a leaf listed by id, not in its triangle blocks (`first` and
 /// `count_flags` as stored in its node slot), against `ray` restricted to [tmin, tmax); on a hit
 /// shrinks `tmax` and updates `best` (closest hit, lower id on ties). With kAnyHit, returns at
-/// the first hit. Counts the primitives tested in `counters` when kCount. Spheres and cylinders
-/// are tested here, every other kind through the Geometry. The list holds no triangles, so it
-/// does not go through the common leaf test (intersect_references): inlining that test's triangle and sphere paths into
-/// the walk changed its register allocation and cost single-ray occlusion queries 11% more instructions (callgrind,
-/// bunny shadow rays), although they never run here. For the same reason this function, which tests spheres and
-/// cylinders itself, is kept out of line: inlined, it cost those queries 4% more instructions (31.7 M against 30.5 M
-/// out of line, `valgrind
-/// --tool=callgrind raylab bench bench/scenes/bunny-on-ground-triangles.json --rays shadow
-/// --against none --repeats 1 --width 256 --height 192`), on a scene without a sphere; marked
-/// cold as well, 7% more.
+/// the first hit. Counts the primitives tested in `counters` when kCount. A leaf lists its
+/// spheres first (the collapse puts them there): at least WideBvhLeaves::kSphereLanesFrom of them
+/// are tested four at a time (intersect_leaf_spheres), fewer one by one; then the cylinders from
+/// their frames and every other kind through the Geometry. The list holds no triangles, so it does not
+/// go through the common leaf test (intersect_references): inlining that test's triangle and sphere paths into the walk
+/// changed its register allocation and cost single-ray occlusion queries 11% more instructions
+/// (callgrind, bunny shadow rays), although they never run here. For the same reason this
+/// function is kept out of line: inlined, it cost those queries 4% more instructions (31.7 M
+/// against 30.5 M out of line, `valgrind --tool=callgrind raylab bench
+/// bench/scenes/bunny-on-ground-triangles.json --rays shadow --against none --repeats 1
+/// --width 256 --height 192`), on a scene without a sphere; marked cold as well, 7% more.
 template <bool kAnyHit, bool kCount, int W>
 [[gnu::noinline]] bool intersect_wide_leaf_others(const WideBvhLeaves& leaves, const Geometry& geometry,
                                                   std::uint32_t first, std::uint32_t count_flags,
                                                   const WatertightRay& tri_ray, const Ray& ray, float tmin, float& tmax,
                                                   Hit& best, TraversalCounters& counters) {
   if (!leaf_has_others<W>(count_flags)) return false;
+  const std::span<const std::uint32_t> ids = leaves.others_of(first, count_flags);
+  if constexpr (kCount) counters.prim_tests += ids.size();
+  std::size_t spheres = 0;  // the leaf lists its spheres first
+  if (!leaves.sphere_radius.empty()) {
+    const auto sphere_count = static_cast<std::uint32_t>(geometry.spheres.size());
+    while (spheres < ids.size() && ids[spheres] - leaves.triangle_count < sphere_count) ++spheres;
+  }
   bool found = false;
-  const auto sphere_count = static_cast<std::uint32_t>(geometry.spheres.size());
-  for (const std::uint32_t id : leaves.others_of(first, count_flags)) {
-    if constexpr (kCount) ++counters.prim_tests;
-    // Spheres and cylinders are tested here, the other kinds and groups through the Geometry.
-    const std::uint32_t sphere = id - leaves.triangle_count;  // wraps around below the spheres
-    const CylinderFrame* frame = leaves.cylinder_frame_of(id);
-    bool hit;
-    if (sphere < sphere_count) {
-      hit = intersect_sphere_here<kAnyHit>(geometry.spheres[sphere], id, ray, tmin, tmax, best);
-    } else if (frame != nullptr) {
-      hit = intersect_cylinder_frame<kAnyHit>(*frame, id, ray, tmin, tmax, best);
-    } else {
-      hit = intersect_through_geometry<kAnyHit>(geometry, id, tri_ray, ray, tmin, tmax, best);
+  if (spheres >= WideBvhLeaves::kSphereLanesFrom) {
+    found = intersect_leaf_spheres<kAnyHit>(leaves, ids.first(spheres), ray, tmin, tmax, best);
+    if constexpr (kAnyHit) {
+      if (found) return true;
     }
+  } else {
+    // Too few to pay for the lanes' set-up: the scalar test, from the same copies.
+    const SphereLanes lanes = leaves.sphere_lanes_at(static_cast<std::size_t>(ids.data() - leaves.others.data()));
+    for (std::size_t k = 0; k < spheres; ++k) {
+      if (intersect_sphere_here<kAnyHit>(lanes.sphere(static_cast<int>(k)), ids[k], ray, tmin, tmax, best)) {
+        found = true;
+        if constexpr (kAnyHit) return true;
+      }
+    }
+  }
+  for (const std::uint32_t id : ids.subspan(spheres)) {
+    const CylinderFrame* frame = leaves.cylinder_frame_of(id);
+    const bool hit = frame != nullptr
+                         ? intersect_cylinder_frame<kAnyHit>(*frame, id, ray, tmin, tmax, best)
+                         : intersect_through_geometry<kAnyHit>(geometry, id, tri_ray, ray, tmin, tmax, best);
     if (hit) {
       found = true;
       if constexpr (kAnyHit) return true;

@@ -177,6 +177,9 @@ std::vector<std::uint32_t> wide_leaf_order(const Geometry& g, const BvhTree& tre
   const std::size_t room = others ? WideBvhLeaves::kMaxMixedBlocks * 4 : refs.size();
   std::vector<std::uint32_t> blocks, listed;
   for (const std::uint32_t id : refs) (id < triangle_count && blocks.size() < room ? blocks : listed).push_back(id);
+  // The listed ids put the spheres first, each part in leaf order.
+  std::stable_partition(listed.begin(), listed.end(),
+                        [&](std::uint32_t id) { return id - triangle_count < g.spheres.size(); });
   blocks.insert(blocks.end(), listed.begin(), listed.end());
   return blocks;
 }
@@ -505,8 +508,38 @@ void check_accelerator(const Geometry& g, const BvhConfig& config, const BvhTree
   EXPECT_EQ(info.node_count, wide.nodes.size());
   EXPECT_EQ(info.leaf_count, tree.leaf_count);
   EXPECT_EQ(info.primitive_count, tree.prim_ids.size());
+  // The sphere lanes: 16 bytes per position of `others` and 3 of padding, when a leaf holds a sphere.
+  const std::size_t sphere_lane_bytes = wide.leaves.sphere_radius.empty() ? 0 : (wide.leaves.others.size() + 3) * 16;
   EXPECT_EQ(info.memory_bytes, info.node_count * W * 32 + wide.leaves.blocks.size() * 160 +
-                                   wide.leaves.others.size() * 4 + held.leaves.cylinder_frames.size() * 72);
+                                   wide.leaves.others.size() * 4 + held.leaves.cylinder_frames.size() * 72 +
+                                   sphere_lane_bytes);
+  EXPECT_EQ(held.leaves.sphere_radius, wide.leaves.sphere_radius);
+  EXPECT_EQ(held.leaves.sphere_x, wide.leaves.sphere_x);
+  // Every listed sphere sits in the lanes at its id's position, every other position has radius 0.
+  const auto first_sphere = static_cast<std::uint32_t>(g.triangles.size());
+  bool lists_a_sphere = false;
+  for (const WideBvhNode<W>& node : wide.nodes) {
+    for (int slot = 0; slot < W; ++slot) {
+      const auto ids = wide.leaves.others_of(node.child[slot], node.count[slot]);
+      for (std::size_t k = 0; k < ids.size(); ++k) {
+        const std::size_t at = static_cast<std::size_t>(ids.data() - wide.leaves.others.data()) + k;
+        const std::uint32_t sphere = ids[k] - first_sphere;
+        if (sphere >= g.spheres.size()) {
+          if (!wide.leaves.sphere_radius.empty()) {
+            EXPECT_EQ(wide.leaves.sphere_radius[at], 0.f);
+          }
+          continue;
+        }
+        lists_a_sphere = true;
+        ASSERT_EQ(wide.leaves.sphere_radius.size(), wide.leaves.others.size() + 3);
+        const Sphere& s = g.spheres[sphere];
+        EXPECT_TRUE(wide.leaves.sphere_x[at] == s.center.x && wide.leaves.sphere_y[at] == s.center.y &&
+                    wide.leaves.sphere_z[at] == s.center.z && wide.leaves.sphere_radius[at] == s.radius)
+            << "sphere " << ids[k] << " at position " << at;
+      }
+    }
+  }
+  EXPECT_EQ(lists_a_sphere, !wide.leaves.sphere_radius.empty());
   EXPECT_EQ(info.max_depth, wide.max_depth);
   EXPECT_GE(info.build_seconds, 0.0);
   if (!tree.prim_ids.empty()) {
@@ -1045,7 +1078,8 @@ TYPED_TEST(WideBvhTest, LeavesListingOtherKinds) {
       if (which == 0) {
         EXPECT_TRUE(wide.leaves.blocks.empty());
         EXPECT_EQ(wide.leaves.others.size(), g.size()) << "spheres only: one id each, no headers";
-        EXPECT_EQ(accel.info().memory_bytes, wide.nodes.size() * sizeof(WideBvhNode<W>) + g.size() * 4);
+        // 4 bytes of id and 16 of sphere lanes per sphere, and the lanes' 3 positions of padding.
+        EXPECT_EQ(accel.info().memory_bytes, wide.nodes.size() * sizeof(WideBvhNode<W>) + g.size() * 20 + 3 * 16);
       }
       if (which == 1) {
         EXPECT_GT(shapes.mixed, 0u) << "no leaf holds both kinds";

@@ -19,7 +19,7 @@ struct Sphere {
 /// Uses the numerically careful form of Haines et al. (Ray Tracing Gems, ch. 7): the
 /// discriminant from the distance of the centre to the ray line, and no cancellation in the
 /// nearer root.
-inline bool intersect_sphere(const Sphere& s, const Ray& ray, float tmin, float tmax, float& t) {
+[[gnu::always_inline]] inline bool intersect_sphere(const Sphere& s, const Ray& ray, float tmin, float tmax, float& t) {
   // A radius whose square underflows (below about 1e-22) leaves nothing to compare: every
   // quantity below rounds to 0, the discriminant with them, and every ray would hit at t = 0.
   if (!(s.radius * s.radius > 0.f)) return false;
