@@ -120,7 +120,7 @@ TEST(CheckpointFile, SizesThatDoNotFitTheFileAllocateNothing) {
   ASSERT_NE(it, bytes.end());
   const std::int32_t huge[3] = {32768, 32768, 1};
   std::memcpy(&*it, huge, sizeof huge);
-  bytes.resize(bytes.size() - 8);
+  bytes.erase(bytes.end() - 8, bytes.end());  // the old checksum (resize tripped GCC's bounds warning at -O1)
   Hash64 checksum;
   checksum.bytes(bytes.data(), bytes.size());
   const std::uint64_t sum = checksum.value();
