@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
-#include <span>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -109,6 +108,12 @@ class WideCollapser {
     }
     leaves.blocks.resize(all.blocks);  // not written here: each block is written once, by its leaf
     leaves.others.assign(all.mixed + all.others, 0);
+    if (!m_geometry.spheres.empty() && !leaves.others.empty()) {
+      // Radius 0 (never hit) wherever pack_leaf writes no sphere; 3 floats of padding.
+      for (auto* lane : {&leaves.sphere_x, &leaves.sphere_y, &leaves.sphere_z, &leaves.sphere_radius}) {
+        lane->assign(leaves.others.size() + 3, 0.f);
+      }
+    }
     m_out.leaf_count = all.leaves;
     const LeafCursor start{0, 0, all.mixed};
     if (m_tree.nodes[0].is_leaf()) {
@@ -303,8 +308,18 @@ class WideCollapser {
         *ids++ = id;  // tested through the Geometry
       }
     }
-    // The spheres first, in leaf order, so that the traversal finds them as one run of lanes.
-    std::stable_partition(listed, ids, [&](std::uint32_t id) { return is_sphere(id); });
+    // The spheres first, in leaf order, so that the traversal finds them as one run of lanes,
+    // and their copies beside their ids.
+    std::uint32_t* const spheres_end =
+        std::stable_partition(listed, ids, [&](std::uint32_t id) { return is_sphere(id); });
+    for (const std::uint32_t* p = listed; p < spheres_end; ++p) {
+      const Sphere& s = m_geometry.spheres[*p - leaves.triangle_count];
+      const auto at = static_cast<std::size_t>(p - leaves.others.data());
+      leaves.sphere_x[at] = s.center.x;
+      leaves.sphere_y[at] = s.center.y;
+      leaves.sphere_z[at] = s.center.z;
+      leaves.sphere_radius[at] = s.radius;
+    }
     for (std::uint32_t k = 0; k < split.blocks(); ++k) block[k].repeat_first_lane();
     at.advance(split.usage());
     return slot;
@@ -419,48 +434,12 @@ class WideCollapser {
 
 }  // namespace
 
-// Copies the spheres the leaves list into the leaves' sphere lanes (WideBvhLeaves::sphere_x and
-// the rest), at the positions of their ids in `others`. Leaf by leaf, so that no header (a count
-// that may equal a sphere's id) is taken for one.
-template <int W>
-void prepare_sphere_lanes(const Geometry& geometry, WideBvhTree<W>& tree) {
-  WideBvhLeaves& leaves = tree.leaves;
-  const std::uint32_t first_sphere = leaves.triangle_count;
-  const auto sphere_count = static_cast<std::uint32_t>(geometry.spheres.size());
-  if (sphere_count == 0 || leaves.others.empty()) return;
-  const std::size_t size = leaves.others.size() + 3;
-  leaves.sphere_x.assign(size, 0.f);
-  leaves.sphere_y.assign(size, 0.f);
-  leaves.sphere_z.assign(size, 0.f);
-  leaves.sphere_radius.assign(size, 0.f);
-  bool any = false;
-  for (const WideBvhNode<W>& node : tree.nodes) {
-    for (int slot = 0; slot < W; ++slot) {
-      const std::span<const std::uint32_t> ids = leaves.others_of(node.child[slot], node.count[slot]);
-      const std::size_t at = static_cast<std::size_t>(ids.data() - leaves.others.data());
-      for (std::size_t k = 0; k < ids.size(); ++k) {
-        const std::uint32_t sphere = ids[k] - first_sphere;  // wraps around below the spheres
-        if (sphere >= sphere_count) continue;
-        const Sphere& s = geometry.spheres[sphere];
-        leaves.sphere_x[at + k] = s.center.x;
-        leaves.sphere_y[at + k] = s.center.y;
-        leaves.sphere_z[at + k] = s.center.z;
-        leaves.sphere_radius[at + k] = s.radius;
-        any = true;
-      }
-    }
-  }
-  if (!any) leaves.sphere_x = leaves.sphere_y = leaves.sphere_z = leaves.sphere_radius = {};
-}
-
 template <int W>
 WideBvhTree<W> collapse_to_wide(const BvhTree& tree, const Geometry& geometry) {
   const std::uint32_t* ids = tree.prim_ids.data();
   auto prim = [ids](std::size_t i) { return ids[i]; };
   const BinarySource<decltype(prim)> source{tree.nodes.data(), tree.nodes.size(), tree.prim_ids.empty(), prim};
-  WideBvhTree<W> wide = WideCollapser<W, decltype(prim)>(source, geometry).run();
-  prepare_sphere_lanes(geometry, wide);
-  return wide;
+  return WideCollapser<W, decltype(prim)>(source, geometry).run();
 }
 
 template <int W>
@@ -468,9 +447,7 @@ WideBvhTree<W> collapse_to_wide(const UnorderedBvh& tree, const Geometry& geomet
   const bvh_build::BuildRef* refs = tree.refs.get();
   auto prim = [refs](std::size_t i) { return refs[i].id; };
   const BinarySource<decltype(prim)> source{tree.nodes.get(), tree.node_count, tree.node_count == 0, prim};
-  WideBvhTree<W> wide = WideCollapser<W, decltype(prim)>(source, geometry).run();
-  prepare_sphere_lanes(geometry, wide);
-  return wide;
+  return WideCollapser<W, decltype(prim)>(source, geometry).run();
 }
 
 template WideBvhTree<4> collapse_to_wide<4>(const BvhTree&, const Geometry&);

@@ -27,10 +27,15 @@ Vec3 random_point(Pcg32& rng, float extent) {
   return {uniform(rng, -extent, extent), uniform(rng, -extent, extent), uniform(rng, -extent, extent)};
 }
 
+// Four spheres with centres in [-extent, extent]^3 and radii in [r_lo, r_hi).
+void random_spheres(Pcg32& rng, Sphere (&spheres)[4], float extent, float r_lo, float r_hi) {
+  for (Sphere& s : spheres) s = {random_point(rng, extent), uniform(rng, r_lo, r_hi)};
+}
+
 // Tests the four spheres as one set of lanes with several lane masks, and compares each lane
 // with intersect_sphere; returns the number of lanes hit (over all masks) so callers can check
 // that the cases exercise hits.
-int check_block(const Sphere (&spheres)[4], const Ray& ray, float tmin, float tmax) {
+int check_lanes(const Sphere (&spheres)[4], const Ray& ray, float tmin, float tmax) {
   float x[4], y[4], z[4], r[4];
   for (int i = 0; i < 4; ++i) x[i] = spheres[i].center.x, y[i] = spheres[i].center.y, z[i] = spheres[i].center.z;
   for (int i = 0; i < 4; ++i) r[i] = spheres[i].radius;
@@ -64,13 +69,13 @@ TEST(SphereLanes, RandomSpheresAndRaysGiveTheScalarAnswer) {
   int hits = 0;
   for (int iter = 0; iter < 20000 && !HasFailure(); ++iter) {
     Sphere spheres[4];
-    for (Sphere& s : spheres) s = {random_point(rng, 10.f), uniform(rng, 0.01f, 3.f)};
+    random_spheres(rng, spheres, 10.f, 0.01f, 3.f);
     Ray ray{random_point(rng, 12.f), 0.f, random_point(rng, 1.f)};
-    // Aim at one of the spheres half of the time, so that most blocks hold a hit.
+    // Aim at one of the spheres half of the time, so that most sets of lanes hold a hit.
     if (iter % 2 == 0) ray.direction = spheres[iter % 4].center + random_point(rng, 1.f) - ray.origin;
     const float tmin = iter % 3 == 0 ? 0.f : uniform(rng, -2.f, 1.f);
     const float tmax = iter % 5 == 0 ? kInf : uniform(rng, 0.5f, 3.f);
-    hits += check_block(spheres, ray, tmin, tmax);
+    hits += check_lanes(spheres, ray, tmin, tmax);
   }
   EXPECT_GT(hits, 10000);
 }
@@ -81,15 +86,16 @@ TEST(SphereLanes, IntervalEndsAtTheRoots) {
   int hits = 0;
   for (int iter = 0; iter < 3000 && !HasFailure(); ++iter) {
     Sphere spheres[4];
-    for (Sphere& s : spheres) s = {random_point(rng, 4.f), uniform(rng, 0.5f, 2.f)};
-    const Ray ray{random_point(rng, 8.f), 0.f, spheres[0].center - random_point(rng, 8.f) * 0.01f};
+    random_spheres(rng, spheres, 4.f, 0.5f, 2.f);
+    Ray ray{random_point(rng, 8.f), 0.f, {}};
+    ray.direction = spheres[0].center + random_point(rng, 0.5f) - ray.origin;  // at sphere 0
     float t_near = 0.f, t_far = 0.f;
     if (!intersect_sphere(spheres[0], ray, -kInf, kInf, t_near)) continue;
     if (!intersect_sphere(spheres[0], ray, next_float_up(t_near), kInf, t_far)) t_far = t_near;
     for (const float root : {t_near, t_far}) {
       for (const float end : {std::nextafter(root, -kInf), root, next_float_up(root)}) {
-        hits += check_block(spheres, ray, end, kInf);
-        hits += check_block(spheres, ray, -kInf, end);
+        hits += check_lanes(spheres, ray, end, kInf);
+        hits += check_lanes(spheres, ray, -kInf, end);
       }
     }
   }
@@ -131,8 +137,8 @@ TEST(SphereLanes, ExtremeInputsGiveTheScalarAnswer) {
       spheres[lane] = s;
       spheres[(lane + 1) % 4] = Sphere{{-0.5f, 0.25f, 1.f}, 0.75f};
       for (const Ray& ray : rays) {
-        for (const float tmin : {0.f, -kInf, -0.f}) hits += check_block(spheres, ray, tmin, kInf);
-        hits += check_block(spheres, ray, 0.f, 1.f);
+        for (const float tmin : {0.f, -kInf, -0.f}) hits += check_lanes(spheres, ray, tmin, kInf);
+        hits += check_lanes(spheres, ray, 0.f, 1.f);
       }
     }
   }

@@ -59,14 +59,14 @@ struct WideBvhLeaves {
 
   /// The fewest spheres a leaf must hold for the traversal to test them as lanes of four; it
   /// tests fewer one by one. Callgrind, SPD protocol, 1 thread, against the one-by-one test:
-  /// lanes from 1 or 2 spheres cost rings and tree 3-8% more instructions (most of their leaves
+  /// lanes from 1 or 2 spheres cost rings and tree 3-7% more instructions (most of their leaves
   /// hold one sphere); from 3, balls (a third of its leaves hold 4) saves 5%.
   static constexpr std::size_t kSphereLanesFrom = 3;
 
   /// The spheres among `others`, position by position, as structure of arrays: at position i
   /// the centre and radius of the sphere whose id others[i] is, radius 0 at every other position
   /// (other kinds, headers) and at 3 positions of padding after the end, so that four lanes load
-  /// from any position of a leaf's list. Empty when no leaf holds a sphere.
+  /// from any position of a leaf's list. Empty when the scene has no sphere or no leaf lists ids.
   std::vector<float> sphere_x, sphere_y, sphere_z, sphere_radius;
 
   /// The four lanes of spheres from position `at` of `others`.
@@ -128,8 +128,9 @@ struct WideBvhTree {
 /// Collapses a binary tree into W-wide nodes: each wide node takes a binary interior node's two
 /// children and keeps opening the child of largest surface area until it has W. Each binary
 /// leaf becomes a wide leaf whose triangles are packed four to a block and whose other
-/// primitives are listed by id, the spheres first (each part in leaf order). Throws std::length_error should a leaf's
-/// encoding overflow (more than 2^27 ids listed by the leaves holding both kinds).
+/// primitives are listed by id, the spheres first (each part in leaf order). Throws
+/// std::length_error should a leaf's encoding overflow (more than 2^27 ids listed by the leaves
+/// holding both kinds).
 template <int W>
 WideBvhTree<W> collapse_to_wide(const BvhTree& tree, const Geometry& geometry);
 

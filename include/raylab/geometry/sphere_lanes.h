@@ -1,8 +1,9 @@
 #pragma once
 /// \file
 /// Four spheres stored lane by lane, tested against one ray with SIMD: how the wide BVH tests the
-/// spheres of a leaf. The test is the one of sphere.h done four lanes at a time with the same float operations in the
-/// same order, so each lane gives bit for bit what `intersect_sphere` gives for that sphere.
+/// spheres of a leaf. The test is the one of sphere.h done four lanes at a time with the same
+/// float operations in the same order, so each lane gives bit for bit what `intersect_sphere`
+/// gives for that sphere.
 
 #include <bit>
 #include <cmath>
