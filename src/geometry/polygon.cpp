@@ -1,7 +1,9 @@
 #include "raylab/geometry/polygon.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace raylab {
 namespace {
@@ -36,6 +38,74 @@ std::array<double, 3> newell(std::span<const Vec3> v) {
   return n;
 }
 
+// Where the ring's points lie: a uniform grid of cells over their bounding box, each listing
+// the ring positions in it, so that an ear test looks only at the points inside its triangle's
+// box instead of at every remaining point. It finds what the full scan finds: a point inside the
+// triangle (boundary included) lies inside the triangle's box, and a cell is a monotone function
+// of the coordinates, so the cells from the box's low corner to its high corner hold every point
+// in the box.
+class PointGrid {
+ public:
+  PointGrid(const std::vector<Point2>& pts, const std::vector<std::uint32_t>& ring) {
+    const std::size_t m = ring.size();
+    m_lo = m_hi = pts[ring[0]];
+    for (const std::uint32_t i : ring) {
+      m_lo = {std::min(m_lo.x, pts[i].x), std::min(m_lo.y, pts[i].y)};
+      m_hi = {std::max(m_hi.x, pts[i].x), std::max(m_hi.y, pts[i].y)};
+    }
+    // About one point a cell: enough cells that an ear's box holds few points, few enough that
+    // a large ear's box does not walk many empty cells.
+    m_side = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(m))));
+    m_scale_x = scale(m_hi.x - m_lo.x);
+    m_scale_y = scale(m_hi.y - m_lo.y);
+    m_first.assign(static_cast<std::size_t>(m_side) * m_side + 1, 0);
+    std::vector<std::uint32_t> cell_of(m);
+    for (std::uint32_t k = 0; k < m; ++k) {
+      cell_of[k] = cell(pts[ring[k]]);
+      ++m_first[cell_of[k] + 1];
+    }
+    for (std::size_t c = 1; c < m_first.size(); ++c) m_first[c] += m_first[c - 1];
+    m_positions.resize(m);
+    std::vector<std::uint32_t> fill(m_first.begin(), m_first.end() - 1);
+    for (std::uint32_t k = 0; k < m; ++k) m_positions[fill[cell_of[k]]++] = k;
+  }
+
+  /// Calls `visit(k)` for the ring positions k in the cells that cover the box [lo, hi] (a
+  /// superset of the points in it) until a call returns true; returns whether one did.
+  template <class Visit>
+  bool any_near(Point2 lo, Point2 hi, Visit&& visit) const {
+    const int x0 = axis_cell(lo.x, m_lo.x, m_scale_x), x1 = axis_cell(hi.x, m_lo.x, m_scale_x);
+    const int y0 = axis_cell(lo.y, m_lo.y, m_scale_y), y1 = axis_cell(hi.y, m_lo.y, m_scale_y);
+    for (int y = y0; y <= y1; ++y) {
+      const std::size_t row = static_cast<std::size_t>(y) * m_side;
+      for (std::uint32_t j = m_first[row + x0]; j < m_first[row + x1 + 1]; ++j) {
+        if (visit(m_positions[j])) return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  // Cells per unit length along an axis of extent `extent` (0 when flat or too thin to divide).
+  double scale(double extent) const {
+    const double s = extent > 0.0 ? static_cast<double>(m_side) / extent : 0.0;
+    return std::isfinite(s) ? s : 0.0;
+  }
+  int axis_cell(double v, double lo, double scale) const {
+    const double c = (v - lo) * scale;  // >= 0 for v >= lo, and non-decreasing in v
+    return c >= static_cast<double>(m_side) ? m_side - 1 : static_cast<int>(c);
+  }
+  std::uint32_t cell(Point2 p) const {
+    return static_cast<std::uint32_t>(axis_cell(p.y, m_lo.y, m_scale_y) * m_side + axis_cell(p.x, m_lo.x, m_scale_x));
+  }
+
+  Point2 m_lo, m_hi;
+  int m_side = 1;
+  double m_scale_x = 0.0, m_scale_y = 0.0;
+  std::vector<std::uint32_t> m_first;      // cell c's positions: m_positions[m_first[c], m_first[c + 1])
+  std::vector<std::uint32_t> m_positions;  // ring positions, cell by cell (a row's cells adjacent)
+};
+
 }  // namespace
 
 Vec3 polygon_normal(std::span<const Vec3> vertices) {
@@ -44,6 +114,11 @@ Vec3 polygon_normal(std::span<const Vec3> vertices) {
 }
 
 std::vector<std::array<std::uint32_t, 3>> triangulate_polygon(std::span<const Vec3> vertices) {
+  return detail::triangulate_polygon(vertices, detail::kPointGridFrom);
+}
+
+std::vector<std::array<std::uint32_t, 3>> detail::triangulate_polygon(std::span<const Vec3> vertices,
+                                                                      std::size_t grid_from) {
   using Tri = std::array<std::uint32_t, 3>;
   std::vector<Tri> out;
   const std::size_t n = vertices.size();
@@ -95,13 +170,28 @@ std::vector<std::array<std::uint32_t, 3>> triangulate_polygon(std::span<const Ve
   // triangles instead of in zero-area ones. Vertices at the same place as the ear's base corners
   // are skipped: a polygon that touches itself there (keyhole bridges) cannot cut the ear without
   // also putting a vertex inside it.
+  // Large polygons look only at the points near the ear (PointGrid), skipping the clipped ones
+  // and the ear's own three corners: the same points the ring walk below visits, less those
+  // outside the ear's box, which cannot be in it.
+  const std::optional<PointGrid> grid =
+      m >= grid_from ? std::optional<PointGrid>(std::in_place, pts, ring) : std::nullopt;
+  std::vector<char> clipped(grid ? m : 0);
   auto is_ear = [&](std::uint32_t k) {
     const Point2 a = at(prev[k]), b = at(k), c = at(next[k]);
     if (orient(a, b, c) <= 0.0) return false;
+    auto holds = [&](Point2 p) {
+      if (p == a || p == c) return false;
+      return orient(a, b, p) >= 0.0 && orient(b, c, p) >= 0.0 && orient(c, a, p) >= 0.0;
+    };
+    if (grid) {
+      const Point2 lo{std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y})};
+      const Point2 hi{std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y})};
+      return !grid->any_near(lo, hi, [&](std::uint32_t q) {
+        return !clipped[q] && q != k && q != prev[k] && q != next[k] && holds(at(q));
+      });
+    }
     for (std::uint32_t q = next[next[k]]; q != prev[k]; q = next[q]) {
-      const Point2 p = at(q);
-      if (p == a || p == c) continue;
-      if (orient(a, b, p) >= 0.0 && orient(b, c, p) >= 0.0 && orient(c, a, p) >= 0.0) return false;
+      if (holds(at(q))) return false;
     }
     return true;
   };
@@ -127,6 +217,7 @@ std::vector<std::array<std::uint32_t, 3>> triangulate_polygon(std::span<const Ve
     if (ear[k]) {
       const std::uint32_t p = prev[k], q = next[k];
       emit(p, k, q);
+      if (grid) clipped[k] = 1;
       next[p] = q;
       prev[q] = p;
       --remaining;

@@ -344,6 +344,59 @@ TEST(Polygon, SelfIntersectingTerminatesWithValidIndices) {
   }
 }
 
+// The grid of corners (detail::kPointGridFrom corners and more) is an index, not a rule: every
+// polygon must come out as the scan over all remaining corners gives it, triangle for triangle.
+void expect_grid_changes_nothing(const std::vector<Vec3>& v) {
+  EXPECT_EQ(detail::triangulate_polygon(v, 3), detail::triangulate_polygon(v, SIZE_MAX));
+}
+
+// A gear's outline like SPD's gears.nff: teeth of four corners around a rim, here with a wobble
+// so that no two teeth are alike.
+Shape gear(int teeth, double wobble, Pcg32& rng) {
+  Shape s;
+  for (int i = 0; i < teeth; ++i) {
+    for (int c = 0; c < 4; ++c) {
+      const double a = 2.0 * std::numbers::pi * (i + c / 4.0 + wobble * 0.2 * rng.next_float()) / teeth;
+      const double r = (c == 1 || c == 2 ? 1.2 : 1.0) + wobble * 0.05 * rng.next_float();
+      s.push_back({r * std::cos(a), r * std::sin(a)});
+    }
+  }
+  return s;
+}
+
+TEST(Polygon, GridOfCornersGivesTheTrianglesOfTheFullScan) {
+  Pcg32 rng(23);
+  std::vector<Shape> shapes{comb(2), comb(40), spiral(14), spiral(30), e_shape(), star(), regular(100, 2.0)};
+  for (int i = 0; i < 20; ++i) shapes.push_back(gear(8 + i * 3, i % 2, rng));
+  for (int trial = 0; trial < 100; ++trial) {  // star-shaped, as in RandomStarShaped, larger
+    const std::size_t n = 3 + rng.next_u32() % 120;
+    Shape s;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double a = 2.0 * std::numbers::pi * (double(i) + 0.8 * rng.next_float()) / double(n);
+      s.push_back({(0.1 + 2.0 * rng.next_float()) * std::cos(a), (0.1 + 2.0 * rng.next_float()) * std::sin(a)});
+    }
+    shapes.push_back(s);
+  }
+  for (int trial = 0; trial < 100; ++trial) {       // point soups on a small lattice: self-intersecting,
+    const std::size_t n = 3 + rng.next_u32() % 60;  // collinear and repeated corners everywhere
+    Shape s;
+    for (std::size_t i = 0; i < n; ++i) s.push_back({double(rng.next_u32() % 6), double(rng.next_u32() % 6)});
+    shapes.push_back(s);
+  }
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    SCOPED_TRACE(testing::Message() << "shape " << i << ", " << shapes[i].size() << " corners");
+    for (const Shape& s : {shapes[i], reversed(shapes[i])}) {
+      expect_grid_changes_nothing(flat(s));
+      expect_grid_changes_nothing(tilted(s, {0.3f, 0.2f, 1.f}, {3.f, -2.f, 7.f}));
+    }
+  }
+  // And the grid's answers are valid triangulations (not merely the scan's mistakes repeated).
+  for (int i = 0; i < 5; ++i) {
+    const Shape s = gear(36, i % 2, rng);
+    expect_valid(s, detail::triangulate_polygon(flat(s), 3), s.size() - 2);
+  }
+}
+
 TEST(Polygon, LargeNonConvexPolygonIsFast) {
   // 800 vertices; O(n^3) behaviour would still pass but O(n^2) keeps this well under a second.
   const Shape s = comb(200);
