@@ -168,6 +168,16 @@ inline bool intersect_cylinder_frame(const CylinderFrame& frame, std::uint32_t i
   });
 }
 
+/// intersect_cylinder_frame without the float rejection, for a cylinder that a caller's own
+/// rejection (cylinders_surely_missed) did not turn away: together the same answer.
+template <bool kAnyHit>
+inline bool intersect_cylinder_frame_exact(const CylinderFrame& frame, std::uint32_t id, const Ray& ray, float tmin,
+                                           float& tmax, Hit& best) {
+  return test_with_tie_rule<kAnyHit>(id, tmax, best, [&](float limit, float& t, float&, float& v) {
+    return intersect_cylinder_exact(frame, ray, tmin, limit, t, v);
+  });
+}
+
 /// Tests sphere `id` (`sphere`) against `ray` restricted to [tmin, tmax), with
 /// intersect_through_geometry's contract and bit for bit its answer.
 template <bool kAnyHit>

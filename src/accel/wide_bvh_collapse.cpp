@@ -114,6 +114,7 @@ class WideCollapser {
         lane->assign(leaves.others.size() + 3, 0.f);
       }
     }
+    if (!m_geometry.cylinders.empty()) leaves.cylinder_lanes.assign(leaves.others.size());
     m_out.leaf_count = all.leaves;
     const LeafCursor start{0, 0, all.mixed};
     if (m_tree.nodes[0].is_leaf()) {
@@ -186,6 +187,10 @@ class WideCollapser {
 
   bool is_triangle(std::uint32_t id) const { return id < m_out.leaves.triangle_count; }
   bool is_sphere(std::uint32_t id) const { return id - m_out.leaves.triangle_count < m_geometry.spheres.size(); }
+  // The index of cylinder `id` in the Geometry's cylinders (past their number when it is none).
+  std::size_t cylinder_index(std::uint32_t id) const {
+    return id - m_out.leaves.triangle_count - static_cast<std::uint32_t>(m_geometry.spheres.size());
+  }
 
   static std::uint64_t work(const SubtreeLeaves& s) { return s.blocks + s.mixed + s.others; }
 
@@ -319,6 +324,13 @@ class WideCollapser {
       leaves.sphere_y[at] = s.center.y;
       leaves.sphere_z[at] = s.center.z;
       leaves.sphere_radius[at] = s.radius;
+    }
+    // Then the cylinders, with their rejection data beside their ids.
+    std::uint32_t* const cylinders_end = std::stable_partition(
+        spheres_end, ids, [&](std::uint32_t id) { return cylinder_index(id) < m_geometry.cylinders.size(); });
+    for (const std::uint32_t* p = spheres_end; p < cylinders_end; ++p) {
+      leaves.cylinder_lanes.set(static_cast<std::size_t>(p - leaves.others.data()),
+                                cylinder_frame(m_geometry.cylinders[cylinder_index(*p)]));
     }
     for (std::uint32_t k = 0; k < split.blocks(); ++k) block[k].repeat_first_lane();
     at.advance(split.usage());

@@ -3,6 +3,7 @@
 // single-ray and the packet traversals so that both compute exactly the same numbers. The
 // octree tests its nodes' child boxes with the same box test.
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstddef>
@@ -11,6 +12,7 @@
 #include "leaf_test.h"
 #include "raylab/accel/wide_bvh.h"
 #include "raylab/core/float_neighbour.h"
+#include "raylab/geometry/cylinder_lanes.h"
 #include "raylab/geometry/sphere_lanes.h"
 #include "raylab/simd/isa_namespace.h"
 #include "raylab/simd/wide_float.h"
@@ -72,8 +74,9 @@ template <bool kAnyHit>
 /// shrinks `tmax` and updates `best` (closest hit, lower id on ties). With kAnyHit, returns at
 /// the first hit. Counts the primitives tested in `counters` when kCount. A leaf lists its
 /// spheres first (the collapse puts them there): at least WideBvhLeaves::kSphereLanesFrom of them
-/// are tested four at a time (intersect_leaf_spheres), fewer one by one; then the cylinders from
-/// their frames and every other kind through the Geometry. The list holds no triangles, so it does not
+/// are tested four at a time (intersect_leaf_spheres), fewer one by one; then the cylinders, listed
+/// next, four at a time through the float rejection (cylinders_surely_missed) and one by one
+/// through the exact test; then every other kind through the Geometry. The list holds no triangles, so it does not
 /// go through the common leaf test (intersect_references): inlining that test's triangle and sphere paths into the walk
 /// changed its register allocation and cost single-ray occlusion queries 11% more instructions
 /// (callgrind, bunny shadow rays), although they never run here. For the same reason this
@@ -110,7 +113,35 @@ template <bool kAnyHit, bool kCount, int W>
       }
     }
   }
-  for (const std::uint32_t id : ids.subspan(spheres)) {
+  // Then the cylinders, when there are enough of them: four at a time through the float
+  // rejection, the rest of each four through the exact test, which together is
+  // intersect_cylinder's answer. They are listed together, so the leaf holds enough when the
+  // kCylinderLanesFrom-th id after the spheres is a cylinder: one test, not a count, for the
+  // leaves that hold fewer.
+  std::size_t cylinders = spheres;
+  constexpr std::size_t kFrom = WideBvhLeaves::kCylinderLanesFrom;
+  const auto is_cylinder = [&](std::uint32_t id) {
+    return id - leaves.triangle_count - static_cast<std::uint32_t>(geometry.spheres.size()) <
+           static_cast<std::uint32_t>(geometry.cylinders.size());
+  };
+  if (ids.size() - spheres >= kFrom && is_cylinder(ids[spheres + kFrom - 1]) && !leaves.cylinder_lanes.empty()) {
+    cylinders = spheres + kFrom;
+    while (cylinders < ids.size() && is_cylinder(ids[cylinders])) ++cylinders;
+    const auto position = static_cast<std::size_t>(ids.data() - leaves.others.data());
+    for (std::size_t k = spheres; k < cylinders; k += 4) {
+      const int lanes = (1 << std::min<std::size_t>(4, cylinders - k)) - 1;
+      unsigned maybe =
+          static_cast<unsigned>(lanes & ~cylinders_surely_missed(leaves.cylinder_lanes.at(position + k), lanes, ray));
+      for (; maybe != 0; maybe &= maybe - 1) {
+        const std::uint32_t id = ids[k + static_cast<std::size_t>(std::countr_zero(maybe))];
+        if (intersect_cylinder_frame_exact<kAnyHit>(*leaves.cylinder_frame_of(id), id, ray, tmin, tmax, best)) {
+          found = true;
+          if constexpr (kAnyHit) return true;
+        }
+      }
+    }
+  }
+  for (const std::uint32_t id : ids.subspan(cylinders)) {
     const CylinderFrame* frame = leaves.cylinder_frame_of(id);
     const bool hit = frame != nullptr
                          ? intersect_cylinder_frame<kAnyHit>(*frame, id, ray, tmin, tmax, best)

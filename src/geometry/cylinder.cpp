@@ -48,8 +48,8 @@ bool intersect_cylinder(const Cylinder& cyl, const Ray& ray, float tmin, float t
 // 4e-5 |f|, against the double root's error of 1e-16 of the scale, or 1.5e-8 near a tangency.
 // So every ray rejected here is a ray the double test rejects: the answers are the double test's,
 // bit for bit.
-constexpr float kMinSine = 0.1f;
-constexpr float kMargin = 4e-5f;
+constexpr float kMinSine = detail::kCylinderRejectMinSine;
+constexpr float kMargin = detail::kCylinderRejectMargin;
 
 bool cylinder_surely_missed(const CylinderFrame& frame, const Ray& ray) {
   const Vec3 d = ray.direction;

@@ -177,9 +177,12 @@ std::vector<std::uint32_t> wide_leaf_order(const Geometry& g, const BvhTree& tre
   const std::size_t room = others ? WideBvhLeaves::kMaxMixedBlocks * 4 : refs.size();
   std::vector<std::uint32_t> blocks, listed;
   for (const std::uint32_t id : refs) (id < triangle_count && blocks.size() < room ? blocks : listed).push_back(id);
-  // The listed ids put the spheres first, each part in leaf order.
-  std::stable_partition(listed.begin(), listed.end(),
-                        [&](std::uint32_t id) { return id - triangle_count < g.spheres.size(); });
+  // The listed ids put the spheres first, then the cylinders, each part in leaf order.
+  const auto first_cylinder = triangle_count + static_cast<std::uint32_t>(g.spheres.size());
+  const auto spheres_end = std::stable_partition(
+      listed.begin(), listed.end(), [&](std::uint32_t id) { return id - triangle_count < g.spheres.size(); });
+  std::stable_partition(spheres_end, listed.end(),
+                        [&](std::uint32_t id) { return id - first_cylinder < g.cylinders.size(); });
   blocks.insert(blocks.end(), listed.begin(), listed.end());
   return blocks;
 }
@@ -512,16 +515,34 @@ void check_accelerator(const Geometry& g, const BvhConfig& config, const BvhTree
   const std::size_t sphere_lane_bytes = wide.leaves.sphere_radius.empty() ? 0 : (wide.leaves.others.size() + 3) * 16;
   EXPECT_EQ(info.memory_bytes, info.node_count * W * 32 + wide.leaves.blocks.size() * 160 +
                                    wide.leaves.others.size() * 4 + held.leaves.cylinder_frames.size() * 72 +
-                                   sphere_lane_bytes);
+                                   sphere_lane_bytes + wide.leaves.cylinder_lanes.bytes());
+  // The cylinder lanes: 28 bytes per position of `others` and 3 of padding, when the scene has a
+  // cylinder and a leaf lists ids.
+  EXPECT_EQ(wide.leaves.cylinder_lanes.bytes(),
+            g.cylinders.empty() || wide.leaves.others.empty() ? 0 : (wide.leaves.others.size() + 3) * 28);
   EXPECT_EQ(held.leaves.sphere_radius, wide.leaves.sphere_radius);
   EXPECT_EQ(held.leaves.sphere_x, wide.leaves.sphere_x);
-  // Every listed sphere sits in the lanes at its id's position, every other position has radius 0.
+  // Every listed sphere sits in the lanes at its id's position, every other position has radius 0;
+  // every listed cylinder's rejection data sit in the cylinder lanes at its position. A leaf lists
+  // its spheres, then its cylinders, then the rest.
   const auto first_sphere = static_cast<std::uint32_t>(g.triangles.size());
+  const auto first_cylinder = first_sphere + static_cast<std::uint32_t>(g.spheres.size());
+  auto kind_rank = [&](std::uint32_t id) {
+    return id - first_sphere < g.spheres.size() ? 0 : id - first_cylinder < g.cylinders.size() ? 1 : 2;
+  };
   for (const WideBvhNode<W>& node : wide.nodes) {
     for (int slot = 0; slot < W; ++slot) {
       const auto ids = wide.leaves.others_of(node.child[slot], node.count[slot]);
       for (std::size_t k = 0; k < ids.size(); ++k) {
         const std::size_t at = static_cast<std::size_t>(ids.data() - wide.leaves.others.data()) + k;
+        if (k > 0) {
+          EXPECT_LE(kind_rank(ids[k - 1]), kind_rank(ids[k])) << "leaf list out of kind order at " << at;
+        }
+        const std::uint32_t cylinder = ids[k] - first_cylinder;
+        if (cylinder < g.cylinders.size()) {
+          EXPECT_TRUE(wide.leaves.cylinder_lanes.holds(at, cylinder_frame(g.cylinders[cylinder])))
+              << "cylinder " << ids[k] << " at position " << at;
+        }
         const std::uint32_t sphere = ids[k] - first_sphere;
         if (sphere >= g.spheres.size()) {
           if (!wide.leaves.sphere_radius.empty()) {

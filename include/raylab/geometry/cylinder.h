@@ -57,6 +57,13 @@ bool intersect_cylinder_exact(const CylinderFrame& frame, const Ray& ray, float 
 /// to the axis, the distance within the margin of the radius, magnitudes far from 1).
 bool cylinder_surely_missed(const CylinderFrame& frame, const Ray& ray);
 
+namespace detail {
+/// The float rejection judges only lines at least this sine off the axis (cylinder.cpp says why).
+inline constexpr float kCylinderRejectMinSine = 0.1f;
+/// Its margin over the radius, per unit of |origin - base|_1 + radius (cylinder.cpp says why).
+inline constexpr float kCylinderRejectMargin = 4e-5f;
+}  // namespace detail
+
 /// Outward unit normal of the lateral surface at point `p`.
 Vec3 cylinder_normal(const Cylinder& cyl, Vec3 p);
 
