@@ -95,7 +95,7 @@ AccelInfo WideBvh<W>::info() const {
       leaves.others.size() * sizeof(std::uint32_t) + leaves.cylinder_frames.size() * sizeof(CylinderFrame) +
       (leaves.sphere_x.size() + leaves.sphere_y.size() + leaves.sphere_z.size() + leaves.sphere_radius.size()) *
           sizeof(float) +
-      leaves.cylinder_lanes.bytes();
+      leaves.cylinder_lanes.bytes() + leaves.leaf_kinds.size() * sizeof(WideBvhLeaves::LeafKinds);
   info.node_count = m_tree.nodes.size();
   info.leaf_count = m_tree.leaf_count;
   // References: the used lanes of the blocks and the ids listed by the leaves (not the headers).

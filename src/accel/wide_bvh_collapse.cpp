@@ -115,6 +115,7 @@ class WideCollapser {
       }
     }
     if (!m_geometry.cylinders.empty()) leaves.cylinder_lanes.assign(leaves.others.size());
+    leaves.leaf_kinds.assign(leaves.others.size(), {});
     m_out.leaf_count = all.leaves;
     const LeafCursor start{0, 0, all.mixed};
     if (m_tree.nodes[0].is_leaf()) {
@@ -331,6 +332,13 @@ class WideCollapser {
     for (const std::uint32_t* p = spheres_end; p < cylinders_end; ++p) {
       leaves.cylinder_lanes.set(static_cast<std::size_t>(p - leaves.others.data()),
                                 cylinder_frame(m_geometry.cylinders[cylinder_index(*p)]));
+    }
+    if (ids != listed) {
+      const auto saturated = [](std::ptrdiff_t n) {
+        return static_cast<std::uint8_t>(std::min<std::ptrdiff_t>(n, WideBvhLeaves::kKindCountSaturated));
+      };
+      leaves.leaf_kinds[static_cast<std::size_t>(listed - leaves.others.data())] = {
+          saturated(spheres_end - listed), saturated(cylinders_end - spheres_end)};
     }
     for (std::uint32_t k = 0; k < split.blocks(); ++k) block[k].repeat_first_lane();
     at.advance(split.usage());

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include "leaf_test.h"
 #include "raylab/accel/wide_bvh.h"
@@ -69,14 +70,31 @@ template <bool kAnyHit>
   return found;
 }
 
+/// The numbers of spheres and then cylinders heading a leaf's list `ids`, counted from the ids:
+/// for the leaves whose leaf_kinds entry is saturated (255 or more of a kind). `cylinders` is
+/// where the cylinders end.
+[[gnu::cold, gnu::noinline]] inline void count_leaf_kinds(const WideBvhLeaves& leaves, const Geometry& geometry,
+                                                          std::span<const std::uint32_t> ids, std::size_t& spheres,
+                                                          std::size_t& cylinders) {
+  const std::uint32_t first_sphere = leaves.triangle_count;
+  const auto sphere_count = static_cast<std::uint32_t>(geometry.spheres.size());
+  const auto cylinder_count = static_cast<std::uint32_t>(geometry.cylinders.size());
+  spheres = 0;
+  while (spheres < ids.size() && ids[spheres] - first_sphere < sphere_count) ++spheres;
+  cylinders = spheres;
+  while (cylinders < ids.size() && ids[cylinders] - first_sphere - sphere_count < cylinder_count) ++cylinders;
+}
+
 /// Tests the primitives of a leaf listed by id, not in its triangle blocks (`first` and
 /// `count_flags` as stored in its node slot), against `ray` restricted to [tmin, tmax); on a hit
 /// shrinks `tmax` and updates `best` (closest hit, lower id on ties). With kAnyHit, returns at
 /// the first hit. Counts the primitives tested in `counters` when kCount. A leaf lists its
-/// spheres first (the collapse puts them there): at least WideBvhLeaves::kSphereLanesFrom of them
-/// are tested four at a time (intersect_leaf_spheres), fewer one by one; then the cylinders, listed
-/// next, four at a time through the float rejection (cylinders_surely_missed) and one by one
-/// through the exact test; then every other kind through the Geometry. The list holds no triangles, so it does not
+/// spheres first, then its cylinders (the collapse puts them there, and counts them in
+/// WideBvhLeaves::leaf_kinds): at least WideBvhLeaves::kSphereLanesFrom spheres
+/// are tested four at a time (intersect_leaf_spheres), fewer one by one; then at least
+/// WideBvhLeaves::kCylinderLanesFrom cylinders four at a time through the float rejection
+/// (cylinders_surely_missed) and one by one through the exact test, fewer one by one from their
+/// frames; then every other kind through the Geometry. The list holds no triangles, so it does not
 /// go through the common leaf test (intersect_references): inlining that test's triangle and sphere paths into the walk
 /// changed its register allocation and cost single-ray occlusion queries 11% more instructions
 /// (callgrind, bunny shadow rays), although they never run here. For the same reason this
@@ -92,10 +110,14 @@ template <bool kAnyHit, bool kCount, int W>
   if (!leaf_has_others<W>(count_flags)) return false;
   const std::span<const std::uint32_t> ids = leaves.others_of(first, count_flags);
   if constexpr (kCount) counters.prim_tests += ids.size();
-  std::size_t spheres = 0;  // the leaf lists its spheres first
-  if (!leaves.sphere_radius.empty()) {
-    const auto sphere_count = static_cast<std::uint32_t>(geometry.spheres.size());
-    while (spheres < ids.size() && ids[spheres] - leaves.triangle_count < sphere_count) ++spheres;
+  // The leaf lists its spheres first, then its cylinders; leaf_kinds says how many of each.
+  const auto position = static_cast<std::size_t>(ids.data() - leaves.others.data());
+  const WideBvhLeaves::LeafKinds kinds = leaves.leaf_kinds[position];
+  std::size_t spheres = kinds.spheres;
+  std::size_t cylinders = spheres + kinds.cylinders;  // where the cylinders end
+  if (kinds.spheres == WideBvhLeaves::kKindCountSaturated || kinds.cylinders == WideBvhLeaves::kKindCountSaturated)
+      [[unlikely]] {
+    count_leaf_kinds(leaves, geometry, ids, spheres, cylinders);
   }
   bool found = false;
   if (spheres >= WideBvhLeaves::kSphereLanesFrom) {
@@ -105,9 +127,9 @@ template <bool kAnyHit, bool kCount, int W>
     }
   } else {
     // Too few to pay for the lanes' set-up: the scalar test, from the same copies.
-    const SphereLanes lanes = leaves.sphere_lanes_at(static_cast<std::size_t>(ids.data() - leaves.others.data()));
     for (std::size_t k = 0; k < spheres; ++k) {
-      if (intersect_sphere_here<kAnyHit>(lanes.sphere(static_cast<int>(k)), ids[k], ray, tmin, tmax, best)) {
+      if (intersect_sphere_here<kAnyHit>(leaves.sphere_lanes_at(position + k).sphere(0), ids[k], ray, tmin, tmax,
+                                         best)) {
         found = true;
         if constexpr (kAnyHit) return true;
       }
@@ -115,19 +137,10 @@ template <bool kAnyHit, bool kCount, int W>
   }
   // Then the cylinders, when there are enough of them: four at a time through the float
   // rejection, the rest of each four through the exact test, which together is
-  // intersect_cylinder's answer. They are listed together, so the leaf holds enough when the
-  // kCylinderLanesFrom-th id after the spheres is a cylinder: one test, not a count, for the
-  // leaves that hold fewer.
-  std::size_t cylinders = spheres;
-  constexpr std::size_t kFrom = WideBvhLeaves::kCylinderLanesFrom;
-  const auto is_cylinder = [&](std::uint32_t id) {
-    return id - leaves.triangle_count - static_cast<std::uint32_t>(geometry.spheres.size()) <
-           static_cast<std::uint32_t>(geometry.cylinders.size());
-  };
-  if (ids.size() - spheres >= kFrom && is_cylinder(ids[spheres + kFrom - 1]) && !leaves.cylinder_lanes.empty()) {
-    cylinders = spheres + kFrom;
-    while (cylinders < ids.size() && is_cylinder(ids[cylinders])) ++cylinders;
-    const auto position = static_cast<std::size_t>(ids.data() - leaves.others.data());
+  // intersect_cylinder's answer. Fewer are tested one by one below with the other kinds.
+  if (cylinders - spheres < WideBvhLeaves::kCylinderLanesFrom) {
+    cylinders = spheres;
+  } else {
     for (std::size_t k = spheres; k < cylinders; k += 4) {
       const int lanes = (1 << std::min<std::size_t>(4, cylinders - k)) - 1;
       unsigned maybe =

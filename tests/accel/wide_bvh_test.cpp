@@ -515,7 +515,9 @@ void check_accelerator(const Geometry& g, const BvhConfig& config, const BvhTree
   const std::size_t sphere_lane_bytes = wide.leaves.sphere_radius.empty() ? 0 : (wide.leaves.others.size() + 3) * 16;
   EXPECT_EQ(info.memory_bytes, info.node_count * W * 32 + wide.leaves.blocks.size() * 160 +
                                    wide.leaves.others.size() * 4 + held.leaves.cylinder_frames.size() * 72 +
-                                   sphere_lane_bytes + wide.leaves.cylinder_lanes.bytes());
+                                   sphere_lane_bytes + wide.leaves.cylinder_lanes.bytes() +
+                                   wide.leaves.leaf_kinds.size() * 2);
+  EXPECT_EQ(wide.leaves.leaf_kinds.size(), wide.leaves.others.size());
   // The cylinder lanes: 28 bytes per position of `others` and 3 of padding, when the scene has a
   // cylinder and a leaf lists ids.
   EXPECT_EQ(wide.leaves.cylinder_lanes.bytes(),
@@ -533,6 +535,17 @@ void check_accelerator(const Geometry& g, const BvhConfig& config, const BvhTree
   for (const WideBvhNode<W>& node : wide.nodes) {
     for (int slot = 0; slot < W; ++slot) {
       const auto ids = wide.leaves.others_of(node.child[slot], node.count[slot]);
+      if (!ids.empty()) {  // the leaf's counts of spheres and cylinders, saturated at 255
+        std::size_t spheres = 0, cylinders = 0;
+        for (const std::uint32_t id : ids) {
+          spheres += kind_rank(id) == 0 ? 1 : 0;
+          cylinders += kind_rank(id) == 1 ? 1 : 0;
+        }
+        const WideBvhLeaves::LeafKinds kinds =
+            wide.leaves.leaf_kinds[static_cast<std::size_t>(ids.data() - wide.leaves.others.data())];
+        EXPECT_EQ(kinds.spheres, std::min<std::size_t>(spheres, 255));
+        EXPECT_EQ(kinds.cylinders, std::min<std::size_t>(cylinders, 255));
+      }
       for (std::size_t k = 0; k < ids.size(); ++k) {
         const std::size_t at = static_cast<std::size_t>(ids.data() - wide.leaves.others.data()) + k;
         if (k > 0) {
@@ -1097,8 +1110,9 @@ TYPED_TEST(WideBvhTest, LeavesListingOtherKinds) {
       if (which == 0) {
         EXPECT_TRUE(wide.leaves.blocks.empty());
         EXPECT_EQ(wide.leaves.others.size(), g.size()) << "spheres only: one id each, no headers";
-        // 4 bytes of id and 16 of sphere lanes per sphere, and the lanes' 3 positions of padding.
-        EXPECT_EQ(accel.info().memory_bytes, wide.nodes.size() * sizeof(WideBvhNode<W>) + g.size() * 20 + 3 * 16);
+        // 4 bytes of id, 16 of sphere lanes and 2 of leaf kind counts per sphere, and the lanes'
+        // 3 positions of padding.
+        EXPECT_EQ(accel.info().memory_bytes, wide.nodes.size() * sizeof(WideBvhNode<W>) + g.size() * 22 + 3 * 16);
       }
       if (which == 1) {
         EXPECT_GT(shapes.mixed, 0u) << "no leaf holds both kinds";
@@ -1127,6 +1141,45 @@ TYPED_TEST(WideBvhTest, LeavesListingOtherKinds) {
       if (::testing::Test::HasFailure()) return;
     }
   }
+}
+
+// A leaf listing more spheres and more cylinders than its kind counts hold (255): the traversal
+// counts them from the ids, and answers as brute force does. Piles of coincident shapes cannot
+// be split, so with a large enough max_leaf_size each pile is one leaf.
+TYPED_TEST(WideBvhTest, LeavesListingMoreThan255OfAKind) {
+  constexpr int W = TypeParam::value;
+  Sampler s(71);
+  Geometry g;
+  for (int i = 0; i < 300; ++i) g.add(Sphere{{0.f, 0.f, 5.f}, 0.2f + 0.001f * float(i)}, 0);
+  for (int i = 0; i < 40; ++i) g.add(Sphere{s.in_box(Vec3(-10.f), Vec3(10.f)), s.uni(0.1f, 1.f)}, 1);
+  for (int i = 0; i < 300; ++i) {
+    const float r = 0.1f + 0.002f * float(i);
+    g.add(Cylinder{{0.f, -0.5f, 5.f}, r, {0.f, 0.5f, 5.f}, r}, 2);
+  }
+  for (int i = 0; i < 40; ++i) {
+    const Vec3 b = s.in_box(Vec3(-10.f), Vec3(10.f));
+    g.add(Cylinder{b, 0.3f, b + s.unit(), 0.2f}, 3);
+  }
+  for (int i = 0; i < 20; ++i) g.add(random_triangle(s, s.in_box(Vec3(-10.f), Vec3(10.f)), 0.5f), 4);
+  const BvhConfig config{16, 1024, 1.f, 1.f, 4096};
+  check_all<W>(g, config, 72, 300);
+  if (::testing::Test::HasFailure()) return;
+  const WideBvh<W> accel(g, config);
+  bool saturated = false;
+  for (const WideBvhLeaves::LeafKinds& k : accel.tree().leaves.leaf_kinds) {
+    saturated |= k.spheres == WideBvhLeaves::kKindCountSaturated && k.cylinders == WideBvhLeaves::kKindCountSaturated;
+  }
+  EXPECT_TRUE(saturated) << "no leaf holds 255 spheres and 255 cylinders";
+  const BruteForce brute(g);
+  std::vector<Ray> rays = awkward_rays(g, s, 200, false);
+  for (int i = 0; i < 300; ++i) {  // through the piles, from all around
+    const Vec3 o = Vec3{0.f, 0.f, 5.f} + s.unit() * s.uni(2.f, 20.f);
+    rays.push_back(Ray{o, 0.f, Vec3{0.f, 0.f, 5.f} + s.in_box(Vec3(-0.8f), Vec3(0.8f)) - o});
+  }
+  int hits = 0;
+  compare_bitwise(accel, brute, rays, "vs brute force", s, &hits);
+  EXPECT_GT(hits, 250);
+  check_packets(accel, packet_rays(g, accel, s, 300), "piles past 255");
 }
 
 // Rays with NaN, infinite or zero components (in the direction or the origin): every query

@@ -86,6 +86,18 @@ struct WideBvhLeaves {
   /// four at a time. Empty when the scene has no cylinder or no leaf lists ids.
   CylinderLaneArrays cylinder_lanes;
 
+  /// How many spheres and cylinders head a leaf's list of ids, stored at the position where the
+  /// list starts (other positions unused), each up to kKindCountSaturated: one load instead of
+  /// reading the ids to count them, a loop whose exit mispredicted once per leaf (callgrind's
+  /// branch simulation put 9% of rings' mispredictions there). Empty when no leaf lists ids.
+  struct LeafKinds {
+    std::uint8_t spheres = 0;    ///< spheres first
+    std::uint8_t cylinders = 0;  ///< then cylinders
+  };
+  /// A count that reached this value may be larger: the traversal counts on from the ids.
+  static constexpr std::uint8_t kKindCountSaturated = 255;
+  std::vector<LeafKinds> leaf_kinds;
+
   /// The frame of primitive `id` when it is a cylinder with one, else null.
   const CylinderFrame* cylinder_frame_of(std::uint32_t id) const {
     const std::uint32_t i = id - cylinder_begin;  // wraps around below the range
