@@ -10,20 +10,18 @@
 #include <limits>
 #include <vector>
 
-#include "raylab/core/rng.h"
+#include "../accel/test_scenes.h"
 #include "raylab/geometry/cylinder_lanes.h"
 
 namespace raylab {
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
+using test_scenes::kInf;
+using test_scenes::Sampler;
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-float uniform(Pcg32& rng, float lo, float hi) { return lo + (hi - lo) * rng.next_float(); }
-
-Vec3 random_point(Pcg32& rng, float extent) {
-  return {uniform(rng, -extent, extent), uniform(rng, -extent, extent), uniform(rng, -extent, extent)};
-}
+// A point in the cube [-extent, extent]^3.
+Vec3 random_point(Sampler& s, float extent) { return s.in_box(Vec3(-extent), Vec3(extent)); }
 
 // Stores the four cylinders' frames as lanes (through CylinderLaneArrays, as the wide BVH does,
 // at position `at` of a longer list) and compares each lane with cylinder_surely_missed for
@@ -59,27 +57,27 @@ int check_lanes(const Cylinder (&cylinders)[4], const Ray& ray) {
   return rejected;
 }
 
-Cylinder random_cylinder(Pcg32& rng, float extent) {
-  const Vec3 base = random_point(rng, extent);
-  const float r0 = uniform(rng, 0.05f, 2.f);
+Cylinder random_cylinder(Sampler& s, float extent) {
+  const Vec3 base = random_point(s, extent);
+  const float r0 = s.uni(0.05f, 2.f);
   // Cylinders, cones, and now and then a flat cone (rejection off) or a negative radius.
-  const float r1 = rng.next_u32() % 4 == 0 ? uniform(rng, -1.f, 3.f) : r0;
-  return {base, r0, base + random_point(rng, 4.f), r1};
+  const float r1 = s.rng.next_u32() % 4 == 0 ? s.uni(-1.f, 3.f) : r0;
+  return {base, r0, base + random_point(s, 4.f), r1};
 }
 
 TEST(CylinderLanes, RandomCylindersAndRaysGiveTheScalarAnswer) {
-  Pcg32 rng(31, 3);
+  Sampler s(31);
   int rejected = 0, judged = 0;
   for (int iter = 0; iter < 20000 && !HasFailure(); ++iter) {
     Cylinder cylinders[4];
-    for (Cylinder& c : cylinders) c = random_cylinder(rng, 10.f);
-    Ray ray{random_point(rng, 12.f), 0.f, random_point(rng, 1.f)};
+    for (Cylinder& c : cylinders) c = random_cylinder(s, 10.f);
+    Ray ray{random_point(s, 12.f), 0.f, random_point(s, 1.f)};
     // Aim near one of the cylinders' axes half of the time: lines passing within a few radii,
     // where the margin decides.
     if (iter % 2 == 0) {
       const Cylinder& c = cylinders[iter % 4];
-      const Vec3 on_axis = c.base + (c.apex - c.base) * rng.next_float();
-      ray.direction = on_axis + random_point(rng, 2.f * std::fabs(c.base_radius) + 0.1f) - ray.origin;
+      const Vec3 on_axis = c.base + (c.apex - c.base) * s.rng.next_float();
+      ray.direction = on_axis + random_point(s, 2.f * std::fabs(c.base_radius) + 0.1f) - ray.origin;
     }
     if (iter % 7 == 0) ray.direction = ray.direction * 1e-3f;  // lengths far from 1
     if (iter % 11 == 0) ray.direction = ray.direction * 1e3f;
@@ -93,14 +91,14 @@ TEST(CylinderLanes, RandomCylindersAndRaysGiveTheScalarAnswer) {
 // Rays parallel to an axis (never judged), across it at the smallest judged angle and just
 // below it, and lines passing at the margin's edge of the radius.
 TEST(CylinderLanes, AnglesAndDistancesAtTheLimitsGiveTheScalarAnswer) {
-  Pcg32 rng(8, 1);
+  Sampler s(8);
   const Cylinder along_z{{0.f, 0.f, 0.f}, 1.f, {0.f, 0.f, 5.f}, 1.f};
   int rejected = 0;
   for (int iter = 0; iter < 4000 && !HasFailure(); ++iter) {
-    Cylinder cylinders[4] = {along_z, random_cylinder(rng, 3.f), along_z, random_cylinder(rng, 3.f)};
-    const float sine = iter % 3 == 0 ? 0.f : uniform(rng, 0.095f, 0.105f);
-    const float off = uniform(rng, 0.99f, 1.01f) * (1.f + 4e-5f * uniform(rng, 0.f, 200.f));
-    const Ray ray{{off, uniform(rng, -50.f, 50.f), uniform(rng, -10.f, 10.f)},
+    Cylinder cylinders[4] = {along_z, random_cylinder(s, 3.f), along_z, random_cylinder(s, 3.f)};
+    const float sine = iter % 3 == 0 ? 0.f : s.uni(0.095f, 0.105f);
+    const float off = s.uni(0.99f, 1.01f) * (1.f + 4e-5f * s.uni(0.f, 200.f));
+    const Ray ray{{off, s.uni(-50.f, 50.f), s.uni(-10.f, 10.f)},
                   0.f,
                   {0.f, sine, std::sqrt(1.f - sine * sine) * (iter % 2 == 0 ? 1.f : -1.f)}};
     rejected += check_lanes(cylinders, ray);
