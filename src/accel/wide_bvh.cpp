@@ -14,28 +14,6 @@
 
 namespace raylab {
 #ifndef RAYLAB_KERNEL_VARIANT  // once, with the library's own flags (kernel_dispatch.h)
-namespace {
-
-// Fills the leaves' cylinder frames for the range of cylinder ids among `ids` (a structure over
-// part of the scene, one object's, computes only its own).
-void prepare_cylinder_frames(const Geometry& geometry, std::span<const std::uint32_t> ids, WideBvhLeaves& leaves) {
-  const auto begin = static_cast<std::uint32_t>(geometry.triangles.size() + geometry.spheres.size());
-  const auto end = begin + static_cast<std::uint32_t>(geometry.cylinders.size());
-  std::uint32_t lo = end, hi = begin;
-  for (const std::uint32_t id : ids) {
-    if (id < begin || id >= end) continue;
-    lo = std::min(lo, id);
-    hi = std::max(hi, id + 1);
-  }
-  if (lo >= hi) return;
-  leaves.cylinder_begin = lo;
-  leaves.cylinder_frames.reserve(hi - lo);
-  for (std::uint32_t id = lo; id < hi; ++id)
-    leaves.cylinder_frames.push_back(cylinder_frame(geometry.cylinders[id - begin]));
-}
-
-}  // namespace
-
 template <int W>
 WideBvh<W>::WideBvh(const Geometry& geometry, const BvhConfig& config)
     : WideBvh(geometry, geometry.primitive_ids(), config) {}
@@ -50,8 +28,7 @@ WideBvh<W>::WideBvh(const Geometry& geometry, std::span<const std::uint32_t> ids
     // The builder's tree as it comes, without build_bvh's depth-first relayout: the collapse
     // lays the wide tree out itself.
     const UnorderedBvh tree = build_bvh_unordered(geometry, ids, build_config(config));
-    m_tree = collapse_to_wide<W>(tree, geometry);
-    prepare_cylinder_frames(geometry, ids, m_tree.leaves);
+    m_tree = collapse_to_wide<W>(tree, geometry, ids);
     const BvhNode& root = tree.nodes[0];
     m_bounds = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
   }

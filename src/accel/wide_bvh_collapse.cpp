@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -81,10 +82,31 @@ bool is_interior_slot(const WideBvhNode<W>& node, int i) {
   return node.count[i] == 0 && node.child[i] != 0;
 }
 
+// Fills the leaves' cylinder frames for the range of cylinder ids among `ids` (a structure over
+// part of the scene, one object's, computes only its own), before any leaf is packed: the leaves'
+// cylinder lanes are copied from them.
+void prepare_cylinder_frames(const Geometry& geometry, std::span<const std::uint32_t> ids, WideBvhLeaves& leaves) {
+  const auto begin = static_cast<std::uint32_t>(geometry.triangles.size() + geometry.spheres.size());
+  const auto end = begin + static_cast<std::uint32_t>(geometry.cylinders.size());
+  std::uint32_t lo = end, hi = begin;
+  for (const std::uint32_t id : ids) {
+    if (id < begin || id >= end) continue;
+    lo = std::min(lo, id);
+    hi = std::max(hi, id + 1);
+  }
+  if (lo >= hi) return;
+  leaves.cylinder_begin = lo;
+  leaves.cylinder_frames.reserve(hi - lo);
+  for (std::uint32_t id = lo; id < hi; ++id)
+    leaves.cylinder_frames.push_back(cylinder_frame(geometry.cylinders[id - begin]));
+}
+
 template <int W, class PrimOf>
 class WideCollapser {
  public:
-  WideCollapser(const BinarySource<PrimOf>& tree, const Geometry& geometry) : m_tree(tree), m_geometry(geometry) {}
+  // `ids`: the primitives the tree was built over.
+  WideCollapser(const BinarySource<PrimOf>& tree, const Geometry& geometry, std::span<const std::uint32_t> ids)
+      : m_tree(tree), m_geometry(geometry), m_ids(ids) {}
 
   // The collapse runs in three steps. The leaves of the binary subtrees are summed (in parallel;
   // kept for the nodes the next step needs). The top of the tree (subtrees above kFragmentWork)
@@ -95,6 +117,7 @@ class WideCollapser {
   WideBvhTree<W> run() {
     WideBvhLeaves& leaves = m_out.leaves;
     leaves.triangle_count = static_cast<std::uint32_t>(m_geometry.triangles.size());
+    prepare_cylinder_frames(m_geometry, m_ids, leaves);
     if (m_tree.empty) {
       m_out.nodes.push_back(empty_node());  // nothing to hold: every slot empty
       return std::move(m_out);
@@ -188,10 +211,6 @@ class WideCollapser {
 
   bool is_triangle(std::uint32_t id) const { return id < m_out.leaves.triangle_count; }
   bool is_sphere(std::uint32_t id) const { return id - m_out.leaves.triangle_count < m_geometry.spheres.size(); }
-  // The index of cylinder `id` in the Geometry's cylinders (past their number when it is none).
-  std::size_t cylinder_index(std::uint32_t id) const {
-    return id - m_out.leaves.triangle_count - static_cast<std::uint32_t>(m_geometry.spheres.size());
-  }
 
   static std::uint64_t work(const SubtreeLeaves& s) { return s.blocks + s.mixed + s.others; }
 
@@ -326,12 +345,11 @@ class WideCollapser {
       leaves.sphere_z[at] = s.center.z;
       leaves.sphere_radius[at] = s.radius;
     }
-    // Then the cylinders, with their rejection data beside their ids.
+    // Then the cylinders (the ids with a frame), with their rejection data beside their ids.
     std::uint32_t* const cylinders_end = std::stable_partition(
-        spheres_end, ids, [&](std::uint32_t id) { return cylinder_index(id) < m_geometry.cylinders.size(); });
+        spheres_end, ids, [&](std::uint32_t id) { return leaves.cylinder_frame_of(id) != nullptr; });
     for (const std::uint32_t* p = spheres_end; p < cylinders_end; ++p) {
-      leaves.cylinder_lanes.set(static_cast<std::size_t>(p - leaves.others.data()),
-                                cylinder_frame(m_geometry.cylinders[cylinder_index(*p)]));
+      leaves.cylinder_lanes.set(static_cast<std::size_t>(p - leaves.others.data()), *leaves.cylinder_frame_of(*p));
     }
     if (ids != listed) {
       const auto saturated = [](std::ptrdiff_t n) {
@@ -442,6 +460,7 @@ class WideCollapser {
 
   const BinarySource<PrimOf>& m_tree;
   const Geometry& m_geometry;
+  std::span<const std::uint32_t> m_ids;
   WideBvhTree<W> m_out;
   bool m_all_triangles = false;             // the geometry holds triangles only
   std::unique_ptr<SubtreeLeaves[]> m_sums;  // per binary node, where m_summed is set
@@ -459,22 +478,23 @@ WideBvhTree<W> collapse_to_wide(const BvhTree& tree, const Geometry& geometry) {
   const std::uint32_t* ids = tree.prim_ids.data();
   auto prim = [ids](std::size_t i) { return ids[i]; };
   const BinarySource<decltype(prim)> source{tree.nodes.data(), tree.nodes.size(), tree.prim_ids.empty(), prim};
-  return WideCollapser<W, decltype(prim)>(source, geometry).run();
+  return WideCollapser<W, decltype(prim)>(source, geometry, tree.prim_ids).run();
 }
 
 template <int W>
-WideBvhTree<W> collapse_to_wide(const UnorderedBvh& tree, const Geometry& geometry) {
+WideBvhTree<W> collapse_to_wide(const UnorderedBvh& tree, const Geometry& geometry,
+                                std::span<const std::uint32_t> ids) {
   const bvh_build::BuildRef* refs = tree.refs.get();
   auto prim = [refs](std::size_t i) { return refs[i].id; };
   const BinarySource<decltype(prim)> source{tree.nodes.get(), tree.node_count, tree.node_count == 0, prim};
-  return WideCollapser<W, decltype(prim)>(source, geometry).run();
+  return WideCollapser<W, decltype(prim)>(source, geometry, ids).run();
 }
 
 template WideBvhTree<4> collapse_to_wide<4>(const BvhTree&, const Geometry&);
 template WideBvhTree<8> collapse_to_wide<8>(const BvhTree&, const Geometry&);
 template WideBvhTree<16> collapse_to_wide<16>(const BvhTree&, const Geometry&);
-template WideBvhTree<4> collapse_to_wide<4>(const UnorderedBvh&, const Geometry&);
-template WideBvhTree<8> collapse_to_wide<8>(const UnorderedBvh&, const Geometry&);
-template WideBvhTree<16> collapse_to_wide<16>(const UnorderedBvh&, const Geometry&);
+template WideBvhTree<4> collapse_to_wide<4>(const UnorderedBvh&, const Geometry&, std::span<const std::uint32_t>);
+template WideBvhTree<8> collapse_to_wide<8>(const UnorderedBvh&, const Geometry&, std::span<const std::uint32_t>);
+template WideBvhTree<16> collapse_to_wide<16>(const UnorderedBvh&, const Geometry&, std::span<const std::uint32_t>);
 
 }  // namespace raylab

@@ -76,13 +76,11 @@ template <bool kAnyHit>
 [[gnu::cold, gnu::noinline]] inline void count_leaf_kinds(const WideBvhLeaves& leaves, const Geometry& geometry,
                                                           std::span<const std::uint32_t> ids, std::size_t& spheres,
                                                           std::size_t& cylinders) {
-  const std::uint32_t first_sphere = leaves.triangle_count;
   const auto sphere_count = static_cast<std::uint32_t>(geometry.spheres.size());
-  const auto cylinder_count = static_cast<std::uint32_t>(geometry.cylinders.size());
   spheres = 0;
-  while (spheres < ids.size() && ids[spheres] - first_sphere < sphere_count) ++spheres;
-  cylinders = spheres;
-  while (cylinders < ids.size() && ids[cylinders] - first_sphere - sphere_count < cylinder_count) ++cylinders;
+  while (spheres < ids.size() && ids[spheres] - leaves.triangle_count < sphere_count) ++spheres;
+  cylinders = spheres;  // the cylinders are the ids with a frame, as the collapse lists them
+  while (cylinders < ids.size() && leaves.cylinder_frame_of(ids[cylinders]) != nullptr) ++cylinders;
 }
 
 /// Tests the primitives of a leaf listed by id, not in its triangle blocks (`first` and

@@ -152,7 +152,9 @@ struct WideBvhTree {
 /// Collapses a binary tree into W-wide nodes: each wide node takes a binary interior node's two
 /// children and keeps opening the child of largest surface area until it has W. Each binary
 /// leaf becomes a wide leaf whose triangles are packed four to a block and whose other
-/// primitives are listed by id, the spheres first, then the cylinders (each part in leaf order). Throws
+/// primitives are listed by id, the spheres first, then the cylinders (each part in leaf order);
+/// the frames of the cylinder ids the tree holds are computed first, and the cylinders' lanes
+/// copied from them. Throws
 /// std::length_error should a leaf's encoding overflow (more than 2^27 ids listed by the leaves
 /// holding both kinds).
 template <int W>
