@@ -83,6 +83,54 @@ template <bool kAnyHit>
   while (cylinders < ids.size() && leaves.cylinder_frame_of(ids[cylinders]) != nullptr) ++cylinders;
 }
 
+/// A leaf's list of primitives other than triangles: its ids, their position in
+/// `leaves.others` (where the sphere and cylinder lanes of the same ids lie), and where its
+/// spheres and then its cylinders end (the collapse lists them first, in that order, and counts
+/// them in WideBvhLeaves::leaf_kinds).
+struct LeafOthers {
+  std::span<const std::uint32_t> ids;  ///< the list
+  std::size_t position = 0;            ///< ids[0]'s position in leaves.others
+  std::size_t sphere_end = 0;          ///< ids [0, sphere_end) are spheres
+  std::size_t cylinder_end = 0;        ///< ids [sphere_end, cylinder_end) are cylinders
+};
+
+/// The list of the leaf whose node slot holds `first` and `count_flags` (with others in it).
+[[gnu::always_inline]] inline LeafOthers leaf_others(const WideBvhLeaves& leaves, const Geometry& geometry,
+                                                     std::uint32_t first, std::uint32_t count_flags) {
+  LeafOthers others;
+  others.ids = leaves.others_of(first, count_flags);
+  others.position = static_cast<std::size_t>(others.ids.data() - leaves.others.data());
+  const WideBvhLeaves::LeafKinds kinds = leaves.leaf_kinds[others.position];
+  others.sphere_end = kinds.spheres;
+  others.cylinder_end = others.sphere_end + kinds.cylinders;
+  if (kinds.spheres == WideBvhLeaves::kKindCountSaturated || kinds.cylinders == WideBvhLeaves::kKindCountSaturated)
+      [[unlikely]] {
+    count_leaf_kinds(leaves, geometry, others.ids, others.sphere_end, others.cylinder_end);
+  }
+  return others;
+}
+
+/// Tests the primitives `ids` of a leaf's list one by one, each cylinder from its frame and
+/// every other kind through the Geometry, with intersect_wide_leaf_others' contract.
+template <bool kAnyHit>
+[[gnu::always_inline]] inline bool intersect_leaf_one_by_one(const WideBvhLeaves& leaves, const Geometry& geometry,
+                                                             std::span<const std::uint32_t> ids,
+                                                             const WatertightRay& tri_ray, const Ray& ray, float tmin,
+                                                             float& tmax, Hit& best) {
+  bool found = false;
+  for (const std::uint32_t id : ids) {
+    const CylinderFrame* frame = leaves.cylinder_frame_of(id);
+    const bool hit = frame != nullptr
+                         ? intersect_cylinder_frame<kAnyHit>(*frame, id, ray, tmin, tmax, best)
+                         : intersect_through_geometry<kAnyHit>(geometry, id, tri_ray, ray, tmin, tmax, best);
+    if (hit) {
+      found = true;
+      if constexpr (kAnyHit) return true;
+    }
+  }
+  return found;
+}
+
 /// Tests the primitives of a leaf listed by id, not in its triangle blocks (`first` and
 /// `count_flags` as stored in its node slot), against `ray` restricted to [tmin, tmax); on a hit
 /// shrinks `tmax` and updates `best` (closest hit, lower id on ties). With kAnyHit, returns at
@@ -106,17 +154,11 @@ template <bool kAnyHit, bool kCount, int W>
                                                   const WatertightRay& tri_ray, const Ray& ray, float tmin, float& tmax,
                                                   Hit& best, TraversalCounters& counters) {
   if (!leaf_has_others<W>(count_flags)) return false;
-  const std::span<const std::uint32_t> ids = leaves.others_of(first, count_flags);
+  const LeafOthers others = leaf_others(leaves, geometry, first, count_flags);
+  const std::span<const std::uint32_t> ids = others.ids;
+  const std::size_t position = others.position, spheres = others.sphere_end;
+  std::size_t cylinders = others.cylinder_end;
   if constexpr (kCount) counters.prim_tests += ids.size();
-  // The leaf lists its spheres first, then its cylinders; leaf_kinds says how many of each.
-  const auto position = static_cast<std::size_t>(ids.data() - leaves.others.data());
-  const WideBvhLeaves::LeafKinds kinds = leaves.leaf_kinds[position];
-  std::size_t spheres = kinds.spheres;
-  std::size_t cylinders = spheres + kinds.cylinders;  // where the cylinders end
-  if (kinds.spheres == WideBvhLeaves::kKindCountSaturated || kinds.cylinders == WideBvhLeaves::kKindCountSaturated)
-      [[unlikely]] {
-    count_leaf_kinds(leaves, geometry, ids, spheres, cylinders);
-  }
   bool found = false;
   if (spheres >= WideBvhLeaves::kSphereLanesFrom) {
     found = intersect_leaf_spheres<kAnyHit>(leaves, ids.first(spheres), ray, tmin, tmax, best);
@@ -152,15 +194,8 @@ template <bool kAnyHit, bool kCount, int W>
       }
     }
   }
-  for (const std::uint32_t id : ids.subspan(cylinders)) {
-    const CylinderFrame* frame = leaves.cylinder_frame_of(id);
-    const bool hit = frame != nullptr
-                         ? intersect_cylinder_frame<kAnyHit>(*frame, id, ray, tmin, tmax, best)
-                         : intersect_through_geometry<kAnyHit>(geometry, id, tri_ray, ray, tmin, tmax, best);
-    if (hit) {
-      found = true;
-      if constexpr (kAnyHit) return true;
-    }
+  if (intersect_leaf_one_by_one<kAnyHit>(leaves, geometry, ids.subspan(cylinders), tri_ray, ray, tmin, tmax, best)) {
+    found = true;
   }
   return found;
 }

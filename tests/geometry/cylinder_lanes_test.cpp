@@ -1,8 +1,10 @@
-// The SIMD cylinder rejection (cylinder_lanes.h) against the scalar one it must reproduce,
-// cylinder_surely_missed: every lane gives the same answer, on random cylinders and cones and
-// rays near them (where the rejection's margin decides), on rays along or across the axis, and
-// on the inputs where float runs out (tiny and huge directions, NaN and infinities, flat cones
-// whose rejection is off, degenerate axes).
+// The SIMD cylinder rejections against the scalar one they must reproduce,
+// cylinder_surely_missed: four cylinders against one ray (cylinder_lanes.h) and one cylinder
+// against 4, 8 or 16 rays (cylinder_rays.h, for packets) give in every lane the same answer, on
+// random cylinders and cones and rays near them (where the rejection's margin decides), on rays
+// along or across the axis, and on the inputs where float runs out (tiny and huge directions,
+// NaN and infinities, flat cones whose rejection is off, degenerate axes). The ray-parallel
+// test takes each case's ray in one lane beside the rays of the cases before it.
 
 #include <gtest/gtest.h>
 
@@ -12,9 +14,13 @@
 
 #include "../accel/test_scenes.h"
 #include "raylab/geometry/cylinder_lanes.h"
+#include "raylab/geometry/cylinder_rays.h"
+#include "recent_rays.h"
 
 namespace raylab {
 namespace {
+
+using test::RecentRays;
 
 using test_scenes::kInf;
 using test_scenes::Sampler;
@@ -23,11 +29,32 @@ constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 // A point in the cube [-extent, extent]^3.
 Vec3 random_point(Sampler& s, float extent) { return s.in_box(Vec3(-extent), Vec3(extent)); }
 
+// Rejects the first N of `recent`'s rays for the cylinder of `frame` as lanes, with every lane
+// and with every other lane, and compares each lane with cylinder_surely_missed.
+template <int N>
+void check_rays(const CylinderFrame& frame, const RecentRays& recent) {
+  const RayLanes<N> rays = RayLanes<N>::load(recent.ox, recent.oy, recent.oz, recent.dx, recent.dy, recent.dz);
+  for (const unsigned lanes : {(1u << N) - 1u, 0x5555u & ((1u << N) - 1u)}) {
+    const unsigned mask = cylinders_surely_missed_by_rays<N>(frame, rays, lanes);
+    EXPECT_EQ(mask & ~lanes, 0u) << "a lane outside the mask";
+    for (int i = 0; i < N; ++i) {
+      if (((lanes >> i) & 1u) == 0) continue;
+      const Ray ray = recent.ray(i);
+      EXPECT_EQ(((mask >> i) & 1u) != 0, cylinder_surely_missed(frame, ray))
+          << N << " rays, lane " << i << " base=(" << frame.base.x << ", " << frame.base.y << ", " << frame.base.z
+          << ") axis=(" << frame.axis.x << ", " << frame.axis.y << ", " << frame.axis.z << ") R=" << frame.reject_radius
+          << " o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=(" << ray.direction.x
+          << ", " << ray.direction.y << ", " << ray.direction.z << ")";
+    }
+  }
+}
+
 // Stores the four cylinders' frames as lanes (through CylinderLaneArrays, as the wide BVH does,
 // at position `at` of a longer list) and compares each lane with cylinder_surely_missed for
 // several lane masks. Returns the number of lanes rejected, so callers can check that the cases
-// exercise both answers.
-int check_lanes(const Cylinder (&cylinders)[4], const Ray& ray) {
+// exercise both answers. Then adds the ray to `recent` and rejects the recent rays for each
+// cylinder at 4, 8 and 16 lanes.
+int check_lanes(const Cylinder (&cylinders)[4], const Ray& ray, RecentRays& recent) {
   constexpr std::size_t at = 3;
   CylinderLaneArrays arrays;
   arrays.assign(at + 4);
@@ -54,6 +81,12 @@ int check_lanes(const Cylinder (&cylinders)[4], const Ray& ray) {
       rejected += got ? 1 : 0;
     }
   }
+  recent.push(ray);
+  for (const CylinderFrame& frame : frames) {
+    check_rays<4>(frame, recent);
+    check_rays<8>(frame, recent);
+    check_rays<16>(frame, recent);
+  }
   return rejected;
 }
 
@@ -66,6 +99,7 @@ Cylinder random_cylinder(Sampler& s, float extent) {
 }
 
 TEST(CylinderLanes, RandomCylindersAndRaysGiveTheScalarAnswer) {
+  RecentRays recent;
   Sampler s(31);
   int rejected = 0, judged = 0;
   for (int iter = 0; iter < 20000 && !HasFailure(); ++iter) {
@@ -81,7 +115,7 @@ TEST(CylinderLanes, RandomCylindersAndRaysGiveTheScalarAnswer) {
     }
     if (iter % 7 == 0) ray.direction = ray.direction * 1e-3f;  // lengths far from 1
     if (iter % 11 == 0) ray.direction = ray.direction * 1e3f;
-    rejected += check_lanes(cylinders, ray);
+    rejected += check_lanes(cylinders, ray, recent);
     judged += 4 + 2 + 1;
   }
   EXPECT_GT(rejected, judged / 10);
@@ -91,6 +125,7 @@ TEST(CylinderLanes, RandomCylindersAndRaysGiveTheScalarAnswer) {
 // Rays parallel to an axis (never judged), across it at the smallest judged angle and just
 // below it, and lines passing at the margin's edge of the radius.
 TEST(CylinderLanes, AnglesAndDistancesAtTheLimitsGiveTheScalarAnswer) {
+  RecentRays recent;
   Sampler s(8);
   const Cylinder along_z{{0.f, 0.f, 0.f}, 1.f, {0.f, 0.f, 5.f}, 1.f};
   int rejected = 0;
@@ -101,13 +136,14 @@ TEST(CylinderLanes, AnglesAndDistancesAtTheLimitsGiveTheScalarAnswer) {
     const Ray ray{{off, s.uni(-50.f, 50.f), s.uni(-10.f, 10.f)},
                   0.f,
                   {0.f, sine, std::sqrt(1.f - sine * sine) * (iter % 2 == 0 ? 1.f : -1.f)}};
-    rejected += check_lanes(cylinders, ray);
+    rejected += check_lanes(cylinders, ray, recent);
   }
   EXPECT_GT(rejected, 100);
 }
 
 // Where float runs out. Each odd cylinder sits in every lane position beside ordinary ones.
 TEST(CylinderLanes, ExtremeInputsGiveTheScalarAnswer) {
+  RecentRays recent;
   const std::vector<Cylinder> odd = {
       {{0.f, 0.f, 0.f}, 1.f, {0.f, 0.f, 0.f}, 1.f},           // no axis
       {{0.f, 0.f, 0.f}, 0.5f, {0.f, 0.f, 1.f}, 3.f},          // flatter than 45 degrees: rejection off
@@ -139,7 +175,7 @@ TEST(CylinderLanes, ExtremeInputsGiveTheScalarAnswer) {
     for (int lane = 0; lane < 4; ++lane) {
       Cylinder cylinders[4] = {plain, cone, plain, cone};
       cylinders[lane] = c;
-      for (const Ray& ray : rays) rejected += check_lanes(cylinders, ray);
+      for (const Ray& ray : rays) rejected += check_lanes(cylinders, ray, recent);
     }
   }
   EXPECT_GT(rejected, 0);

@@ -1,8 +1,10 @@
-// The SIMD sphere test (sphere_lanes.h) against the scalar test it must reproduce,
-// intersect_sphere: every lane gives the same answer and bit for bit the same distance, on
-// random spheres and rays, on interval ends placed exactly at the roots, and on the inputs where
-// float runs out (overflowing discriminants, radii whose square underflows, NaN and infinities,
-// zero directions, signed zeros).
+// The SIMD sphere tests against the scalar test they must reproduce, intersect_sphere: four
+// spheres against one ray (sphere_lanes.h) and one sphere against 4, 8 or 16 rays
+// (sphere_rays.h, for packets) give in every lane the same answer and bit for bit the same
+// distance, on random spheres and rays, on interval ends placed exactly at the roots, and on
+// the inputs where float runs out (overflowing discriminants, radii whose square underflows, NaN
+// and infinities, zero directions, signed zeros). The ray-parallel test takes each case's ray
+// in one lane beside the rays of the cases before it.
 
 #include <gtest/gtest.h>
 
@@ -14,9 +16,13 @@
 #include "raylab/core/float_neighbour.h"
 #include "raylab/core/rng.h"
 #include "raylab/geometry/sphere_lanes.h"
+#include "raylab/geometry/sphere_rays.h"
+#include "recent_rays.h"
 
 namespace raylab {
 namespace {
+
+using test::RecentRays;
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
@@ -32,10 +38,49 @@ void random_spheres(Pcg32& rng, Sphere (&spheres)[4], float extent, float r_lo, 
   for (Sphere& s : spheres) s = {random_point(rng, extent), uniform(rng, r_lo, r_hi)};
 }
 
+// Tests `sphere` against the first N of `recent`'s rays as lanes, with every lane and with
+// every other lane, and compares each lane with intersect_sphere; returns the lanes hit.
+template <int N>
+int check_rays(const Sphere& sphere, const RecentRays& recent) {
+  using F = simd::WideFloat<N>;
+  const RayLanes<N> rays = RayLanes<N>::load(recent.ox, recent.oy, recent.oz, recent.dx, recent.dy, recent.dz);
+  int hits = 0;
+  for (const unsigned lanes : {(1u << N) - 1u, 0x5555u & ((1u << N) - 1u)}) {
+    float t[N];
+    for (float& x : t) x = -1.f;
+    const unsigned mask = intersect_sphere_rays<N>(sphere, rays, lanes, F::load(recent.tmin), F::load(recent.tmax), t);
+    EXPECT_EQ(mask & ~lanes, 0u) << "a lane outside the mask";
+    for (int i = 0; i < N; ++i) {
+      if (((lanes >> i) & 1u) == 0) continue;
+      const Ray ray = recent.ray(i);
+      float expected = -1.f;
+      const bool hit = intersect_sphere(sphere, ray, ray.tmin, ray.tmax, expected);
+      const bool got = ((mask >> i) & 1u) != 0;
+      EXPECT_EQ(got, hit) << N << " rays, lane " << i << " c=(" << sphere.center.x << ", " << sphere.center.y << ", "
+                          << sphere.center.z << ") r=" << sphere.radius << " o=(" << ray.origin.x << ", "
+                          << ray.origin.y << ", " << ray.origin.z << ") d=(" << ray.direction.x << ", "
+                          << ray.direction.y << ", " << ray.direction.z << ") [" << ray.tmin << ", " << ray.tmax << ")";
+      if (got && hit) {
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(t[i]), std::bit_cast<std::uint32_t>(expected))
+            << N << " rays, lane " << i << ": " << t[i] << " against " << expected;
+      }
+      hits += hit ? 1 : 0;
+    }
+  }
+  return hits;
+}
+
 // Tests the four spheres as one set of lanes with several lane masks, and compares each lane
-// with intersect_sphere; returns the number of lanes hit (over all masks) so callers can check
-// that the cases exercise hits.
-int check_lanes(const Sphere (&spheres)[4], const Ray& ray, float tmin, float tmax) {
+// with intersect_sphere; then adds the ray to `recent` and tests each sphere against the recent
+// rays at 4, 8 and 16 lanes. Returns the number of lanes hit (over all masks) so callers can
+// check that the cases exercise hits.
+int check_lanes(const Sphere (&spheres)[4], const Ray& ray, float tmin, float tmax, RecentRays& recent) {
+  recent.push(ray, tmin, tmax);
+  for (const Sphere& sphere : spheres) {
+    check_rays<4>(sphere, recent);
+    check_rays<8>(sphere, recent);
+    check_rays<16>(sphere, recent);
+  }
   float x[4], y[4], z[4], r[4];
   for (int i = 0; i < 4; ++i) x[i] = spheres[i].center.x, y[i] = spheres[i].center.y, z[i] = spheres[i].center.z;
   for (int i = 0; i < 4; ++i) r[i] = spheres[i].radius;
@@ -65,6 +110,7 @@ int check_lanes(const Sphere (&spheres)[4], const Ray& ray, float tmin, float tm
 }
 
 TEST(SphereLanes, RandomSpheresAndRaysGiveTheScalarAnswer) {
+  RecentRays recent;
   Pcg32 rng(12, 7);
   int hits = 0;
   for (int iter = 0; iter < 20000 && !HasFailure(); ++iter) {
@@ -75,13 +121,14 @@ TEST(SphereLanes, RandomSpheresAndRaysGiveTheScalarAnswer) {
     if (iter % 2 == 0) ray.direction = spheres[iter % 4].center + random_point(rng, 1.f) - ray.origin;
     const float tmin = iter % 3 == 0 ? 0.f : uniform(rng, -2.f, 1.f);
     const float tmax = iter % 5 == 0 ? kInf : uniform(rng, 0.5f, 3.f);
-    hits += check_lanes(spheres, ray, tmin, tmax);
+    hits += check_lanes(spheres, ray, tmin, tmax, recent);
   }
   EXPECT_GT(hits, 10000);
 }
 
 // Interval ends exactly at each root, and one float either side: where `<` and `<=` differ.
 TEST(SphereLanes, IntervalEndsAtTheRoots) {
+  RecentRays recent;
   Pcg32 rng(5, 9);
   int hits = 0;
   for (int iter = 0; iter < 3000 && !HasFailure(); ++iter) {
@@ -94,8 +141,8 @@ TEST(SphereLanes, IntervalEndsAtTheRoots) {
     if (!intersect_sphere(spheres[0], ray, next_float_up(t_near), kInf, t_far)) t_far = t_near;
     for (const float root : {t_near, t_far}) {
       for (const float end : {std::nextafter(root, -kInf), root, next_float_up(root)}) {
-        hits += check_lanes(spheres, ray, end, kInf);
-        hits += check_lanes(spheres, ray, -kInf, end);
+        hits += check_lanes(spheres, ray, end, kInf, recent);
+        hits += check_lanes(spheres, ray, -kInf, end, recent);
       }
     }
   }
@@ -104,6 +151,7 @@ TEST(SphereLanes, IntervalEndsAtTheRoots) {
 
 // Where float runs out. Each case sits in every lane position, beside ordinary spheres.
 TEST(SphereLanes, ExtremeInputsGiveTheScalarAnswer) {
+  RecentRays recent;
   const std::vector<Sphere> odd = {
       {{0.f, 0.f, 0.f}, 3e10f},   // the discriminant overflows for long directions
       {{0.f, 0.f, 0.f}, 1e-30f},  // the radius's square underflows to 0
@@ -137,8 +185,8 @@ TEST(SphereLanes, ExtremeInputsGiveTheScalarAnswer) {
       spheres[lane] = s;
       spheres[(lane + 1) % 4] = Sphere{{-0.5f, 0.25f, 1.f}, 0.75f};
       for (const Ray& ray : rays) {
-        for (const float tmin : {0.f, -kInf, -0.f}) hits += check_lanes(spheres, ray, tmin, kInf);
-        hits += check_lanes(spheres, ray, 0.f, 1.f);
+        for (const float tmin : {0.f, -kInf, -0.f}) hits += check_lanes(spheres, ray, tmin, kInf, recent);
+        hits += check_lanes(spheres, ray, 0.f, 1.f, recent);
       }
     }
   }

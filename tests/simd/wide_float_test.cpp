@@ -1,11 +1,12 @@
 // The W-wide float types of the wide BVH's box test and the Double4 of the triangle block test
 // must be interchangeable with their scalar versions: scalar::WideFloat<W> follows the documented
 // rules (IEEE single precision arithmetic; min and max return the SECOND operand when either is
-// NaN; less_equal_mask clear for NaN), and the native avx::Float8 / avx512::Float16 (where this
-// build has them) give the same bits lane by lane, on ordinary values, NaN in either position,
-// infinities, signed zeros and denormals. Double4 must widen exactly and round back as a scalar
-// cast does, so that the SIMD triangle test equals the scalar one bit for bit. Also the Float4
-// operations the triangle block test added (+, /, less_mask, equal_mask).
+// NaN; less_equal_mask clear for NaN; sqrt and copysign as std's), and the native avx::Float8 /
+// avx512::Float16 (where this build has them) give the same bits lane by lane, on ordinary
+// values, NaN in either position, infinities, signed zeros and denormals. Double4 must widen
+// exactly and round back as a scalar cast does, so that the SIMD triangle test equals the scalar
+// one bit for bit. Also the Float4 operations the triangle block test added (+, /, less_mask,
+// equal_mask).
 
 #include <gtest/gtest.h>
 
@@ -41,7 +42,7 @@ Lanes<W> lanes(const F& f) {
 // The results of every operation of one implementation on (a, b).
 template <int W>
 struct Results {
-  Lanes<W> sub, mul, lo, hi;
+  Lanes<W> sub, mul, lo, hi, root, sign;
   unsigned le = 0;
 };
 
@@ -55,6 +56,8 @@ Results<W> run_ops(const Lanes<W>& a, const Lanes<W>& b) {
   r.lo = lanes<W>(min(fa, fb));
   r.hi = lanes<W>(max(fa, fb));
   r.le = static_cast<unsigned>(less_equal_mask(fa, fb));
+  r.root = lanes<W>(sqrt(fa));
+  r.sign = lanes<W>(copysign(fa, fb));
   unsigned expected = 0;
   for (int i = 0; i < W; ++i) {
     const volatile float x = a[i], y = b[i];  // volatile: the reference is plain scalar code
@@ -62,6 +65,8 @@ Results<W> run_ops(const Lanes<W>& a, const Lanes<W>& b) {
     EXPECT_TRUE(same_arith(r.mul[i], x * y)) << a[i] << " * " << b[i];
     EXPECT_EQ(bits(r.lo[i]), bits(rule_min(a[i], b[i]))) << "min(" << a[i] << ", " << b[i] << ")";
     EXPECT_EQ(bits(r.hi[i]), bits(rule_max(a[i], b[i]))) << "max(" << a[i] << ", " << b[i] << ")";
+    EXPECT_TRUE(same_arith(r.root[i], std::sqrt(x))) << "sqrt(" << a[i] << ")";
+    EXPECT_EQ(bits(r.sign[i]), bits(std::copysign(a[i], b[i]))) << "copysign(" << a[i] << ", " << b[i] << ")";
     expected |= (a[i] <= b[i] ? 1u : 0u) << i;
   }
   EXPECT_EQ(r.le, expected) << "less_equal_mask";
@@ -77,6 +82,8 @@ void compare_with_scalar(const Lanes<W>& a, const Lanes<W>& b) {
     EXPECT_TRUE(same_arith(s.sub[i], v.sub[i]) && same_arith(s.mul[i], v.mul[i])) << "lane " << i;
     EXPECT_EQ(bits(s.lo[i]), bits(v.lo[i])) << "min, lane " << i;
     EXPECT_EQ(bits(s.hi[i]), bits(v.hi[i])) << "max, lane " << i;
+    EXPECT_TRUE(same_arith(s.root[i], v.root[i])) << "sqrt, lane " << i;
+    EXPECT_EQ(bits(s.sign[i]), bits(v.sign[i])) << "copysign, lane " << i;
   }
   EXPECT_EQ(s.le, v.le);
 }

@@ -6,6 +6,7 @@
 /// -DRAYLAB_SIMD_SCALAR=ON). Same NaN rule as Float4: min and max return the SECOND operand when
 /// either is NaN.
 
+#include <cmath>
 #include <cstring>
 
 #include "raylab/simd/isa_namespace.h"
@@ -64,6 +65,20 @@ template <int W>
 inline WideFloat<W> operator/(const WideFloat<W>& a, const WideFloat<W>& b) {
   WideFloat<W> r;
   for (int i = 0; i < W; ++i) r.v[i] = a.v[i] / b.v[i];
+  return r;
+}
+/// Lane-wise correctly rounded square root (NaN below zero, as std::sqrt).
+template <int W>
+inline WideFloat<W> sqrt(const WideFloat<W>& a) {
+  WideFloat<W> r;
+  for (int i = 0; i < W; ++i) r.v[i] = std::sqrt(a.v[i]);
+  return r;
+}
+/// Lane-wise the magnitude of `magnitude` with the sign bit of `sign` (std::copysign).
+template <int W>
+inline WideFloat<W> copysign(const WideFloat<W>& magnitude, const WideFloat<W>& sign) {
+  WideFloat<W> r;
+  for (int i = 0; i < W; ++i) r.v[i] = std::copysign(magnitude.v[i], sign.v[i]);
   return r;
 }
 /// Lane-wise float(double(a) * double(b) - double(c) * double(d)): both products are exact in
@@ -134,6 +149,13 @@ inline Float8 operator-(Float8 a, Float8 b) { return {_mm256_sub_ps(a.v, b.v)}; 
 inline Float8 operator*(Float8 a, Float8 b) { return {_mm256_mul_ps(a.v, b.v)}; }
 inline Float8 operator+(Float8 a, Float8 b) { return {_mm256_add_ps(a.v, b.v)}; }
 inline Float8 operator/(Float8 a, Float8 b) { return {_mm256_div_ps(a.v, b.v)}; }
+/// Lane-wise correctly rounded square root: VSQRTPS.
+inline Float8 sqrt(Float8 a) { return {_mm256_sqrt_ps(a.v)}; }
+/// Lane-wise the magnitude of `magnitude` with the sign bit of `sign` (std::copysign).
+inline Float8 copysign(Float8 magnitude, Float8 sign) {
+  const __m256 sign_bit = _mm256_set1_ps(-0.f);
+  return {_mm256_or_ps(_mm256_andnot_ps(sign_bit, magnitude.v), _mm256_and_ps(sign_bit, sign.v))};
+}
 /// Lane-wise float(double(a) * double(b) - double(c) * double(d)), in two halves of four doubles.
 inline Float8 difference_of_products(Float8 a, Float8 b, Float8 c, Float8 d) {
   auto half = [&](auto take) {
@@ -183,6 +205,16 @@ inline Float16 operator-(Float16 a, Float16 b) { return {_mm512_sub_ps(a.v, b.v)
 inline Float16 operator*(Float16 a, Float16 b) { return {_mm512_mul_ps(a.v, b.v)}; }
 inline Float16 operator+(Float16 a, Float16 b) { return {_mm512_add_ps(a.v, b.v)}; }
 inline Float16 operator/(Float16 a, Float16 b) { return {_mm512_div_ps(a.v, b.v)}; }
+/// Lane-wise correctly rounded square root: VSQRTPS.
+inline Float16 sqrt(Float16 a) { return {_mm512_sqrt_ps(a.v)}; }
+/// Lane-wise the magnitude of `magnitude` with the sign bit of `sign` (std::copysign): one
+/// bitwise select, since AVX-512F alone has no float AND.
+inline Float16 copysign(Float16 magnitude, Float16 sign) {
+  const __m512i sign_bit = _mm512_set1_epi32(static_cast<int>(0x80000000u));
+  // Bit by bit, sign_bit ? sign : magnitude: truth table 0xCA over (sign_bit, sign, magnitude).
+  return {_mm512_castsi512_ps(
+      _mm512_ternarylogic_epi32(sign_bit, _mm512_castps_si512(sign.v), _mm512_castps_si512(magnitude.v), 0xCA))};
+}
 /// Lane-wise float(double(a) * double(b) - double(c) * double(d)), in two halves of eight doubles.
 inline Float16 difference_of_products(Float16 a, Float16 b, Float16 c, Float16 d) {
   auto half = [&](auto take) {
