@@ -74,6 +74,7 @@ Bvh::Bvh(const Geometry& geometry, std::span<const std::uint32_t> ids, const Bvh
   m_tree = build_bvh(geometry, ids, config);
   m_triangle_count = static_cast<std::uint32_t>(geometry.triangles.size());
   m_leaf_triangles = triangles_in_leaf_order(geometry, m_tree.prim_ids);
+  m_cylinder_frames = CylinderFrames::of(geometry, m_tree.prim_ids);
   m_build_seconds = seconds_since(start);
 }
 
@@ -98,7 +99,8 @@ bool Bvh::traverse_octant(Ray& ray, const BvhBoxRay& box_ray, Hit& hit, Traversa
   // Everything the loop touches lives in locals: stores through `ray` and `hit` inside the loop
   // would force the compiler to reload node and array pointers after each one (they may alias).
   const BvhNode* const nodes = m_tree.nodes.data();
-  const SlotTriangles leaf{m_tree.prim_ids.data(), m_leaf_triangles.data(), m_triangle_count, &m_geometry};
+  const SlotTriangles leaf{m_tree.prim_ids.data(), m_leaf_triangles.data(), m_triangle_count, &m_geometry,
+                           &m_cylinder_frames};
   TestEverySlot every_slot;
   const float tmin = ray.tmin;
   float tmax = ray.tmax;
@@ -163,7 +165,7 @@ AccelInfo Bvh::info() const {
   info.name = "bvh2";
   info.build_seconds = m_build_seconds;
   info.memory_bytes = m_tree.nodes.size() * sizeof(BvhNode) + m_tree.prim_ids.size() * sizeof(std::uint32_t) +
-                      m_leaf_triangles.size() * sizeof(Triangle);
+                      m_leaf_triangles.size() * sizeof(Triangle) + m_cylinder_frames.bytes();
   info.node_count = m_tree.nodes.size();
   info.leaf_count = m_tree.leaf_count;
   info.primitive_count = m_tree.prim_ids.size();

@@ -53,6 +53,7 @@ IrregularGrid::IrregularGrid(const Geometry& geometry, std::span<const std::uint
   // point to neighbouring entries instead of all over the scene (on the armadillo, whose
   // triangles are stored in no spatial order, testing them in place cost most of the time).
   copy_slot_primitives(geometry, m_data.ids, m_triangles, m_spheres);
+  m_cylinder_frames = CylinderFrames::of(geometry, m_data.ids);
   if (config.mailbox && !m_data.ids.empty()) {
     m_mailboxes = std::make_unique<Mailboxes>(static_cast<std::uint32_t>(m_data.ids.size()));
   }
@@ -124,7 +125,7 @@ bool IrregularGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, MakeMailbox 
   const IrregularCell* const cells = g.cells.data();
   auto mailbox = make_mailbox();
   const WatertightRay wr(ray);
-  const SlotPrimitives prims(g.ids.data(), m_triangles, m_spheres, m_geometry);
+  const SlotPrimitives prims(g.ids.data(), m_triangles, m_spheres, m_cylinder_frames, m_geometry);
   const SlotFromList slots{g.refs.data()};
   const float tmin = ray.tmin;
   float tmax = ray.tmax;
@@ -192,7 +193,7 @@ AccelInfo IrregularGrid::info() const {
       sizeof(*this) + m_data.cells.size() * sizeof(IrregularCell) +
       (m_data.refs.size() + m_data.ids.size() + m_data.top.size() + m_data.map.size()) * sizeof(std::uint32_t) +
       m_data.nodes.size() * sizeof(IrregularGridData::Node) + m_triangles.size() * sizeof(Triangle) +
-      m_spheres.size() * sizeof(Sphere);
+      m_spheres.size() * sizeof(Sphere) + m_cylinder_frames.bytes();
   info.node_count = m_data.cell_count();
   info.leaf_count = m_data.nonempty_cells;
   info.primitive_count = m_data.ids.size();

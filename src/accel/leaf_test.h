@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "raylab/accel/cylinder_frames.h"
 #include "raylab/geometry/cylinder.h"
 #include "raylab/geometry/geometry.h"
 #include "raylab/simd/isa_namespace.h"
@@ -21,10 +22,11 @@ RAYLAB_ISA_BEGIN
 struct SlotTriangles {
   static constexpr bool kInlineSpheres = false;  ///< spheres go through the Geometry
 
-  const std::uint32_t* ids;      ///< the global id of each slot
-  const Triangle* triangles;     ///< parallel to ids; valid where the id is a triangle's
-  std::uint32_t triangle_count;  ///< global ids below this are triangles
-  const Geometry* geometry;      ///< for every other kind (and groups)
+  const std::uint32_t* ids;         ///< the global id of each slot
+  const Triangle* triangles;        ///< parallel to ids; valid where the id is a triangle's
+  std::uint32_t triangle_count;     ///< global ids below this are triangles
+  const Geometry* geometry;         ///< for every other kind (and groups)
+  const CylinderFrames* cylinders;  ///< the frames of the structure's cylinders
 
   /// The triangle at `slot` (global id `id`).
   const Triangle& triangle(std::uint32_t slot, std::uint32_t /*id*/) const { return triangles[slot]; }
@@ -34,12 +36,13 @@ struct SlotTriangles {
 struct SlotPrimitives {
   static constexpr bool kInlineSpheres = true;  ///< spheres are tested here
 
-  const std::uint32_t* ids;      ///< the global id of each slot
-  const Triangle* triangles;     ///< parallel to ids; valid where the id is a triangle's
-  const Sphere* spheres;         ///< parallel to ids; valid where the id is an inline sphere's
-  std::uint32_t triangle_count;  ///< global ids below this are triangles
-  std::uint32_t sphere_end;      ///< ids in [triangle_count, sphere_end) are tested as inline spheres
-  const Geometry* geometry;      ///< for every other kind (and groups)
+  const std::uint32_t* ids;         ///< the global id of each slot
+  const Triangle* triangles;        ///< parallel to ids; valid where the id is a triangle's
+  const Sphere* spheres;            ///< parallel to ids; valid where the id is an inline sphere's
+  std::uint32_t triangle_count;     ///< global ids below this are triangles
+  std::uint32_t sphere_end;         ///< ids in [triangle_count, sphere_end) are tested as inline spheres
+  const Geometry* geometry;         ///< for every other kind (and groups)
+  const CylinderFrames* cylinders;  ///< the frames of the structure's cylinders
 
   /// The triangle at `slot` (global id `id`).
   const Triangle& triangle(std::uint32_t slot, std::uint32_t /*id*/) const { return triangles[slot]; }
@@ -47,15 +50,17 @@ struct SlotPrimitives {
   const Sphere& sphere(std::uint32_t slot, std::uint32_t /*id*/) const { return spheres[slot]; }
 
   /// The slots `ids` of `geometry` with the copies `copied_triangles` and `copied_spheres` that
-  /// copy_slot_primitives made for them; the id ranges of the kinds come from `geometry`.
+  /// copy_slot_primitives made for them and the frames `frames` of its cylinders; the id ranges
+  /// of the kinds come from `geometry`.
   SlotPrimitives(const std::uint32_t* slot_ids, const std::vector<Triangle>& copied_triangles,
-                 const std::vector<Sphere>& copied_spheres, const Geometry& g)
+                 const std::vector<Sphere>& copied_spheres, const CylinderFrames& frames, const Geometry& g)
       : ids(slot_ids),
         triangles(copied_triangles.data()),
         spheres(copied_spheres.data()),
         triangle_count(static_cast<std::uint32_t>(g.triangles.size())),
         sphere_end(triangle_count + static_cast<std::uint32_t>(g.spheres.size())),
-        geometry(&g) {}
+        geometry(&g),
+        cylinders(&frames) {}
 };
 
 /// Fills `triangles` and `spheres` with copies of the primitives `ids` names, slot by slot, for
@@ -86,21 +91,23 @@ inline void copy_slot_primitives(const Geometry& geometry, const std::vector<std
 struct GeometryPrimitives {
   static constexpr bool kInlineSpheres = true;  ///< spheres are tested here
 
-  const std::uint32_t* ids;      ///< the global id of each slot
-  const Triangle* triangles;     ///< the Geometry's triangles, by global id
-  const Sphere* spheres;         ///< the Geometry's spheres, by global id - triangle_count
-  std::uint32_t triangle_count;  ///< global ids below this are triangles
-  std::uint32_t sphere_end;      ///< ids in [triangle_count, sphere_end) are spheres
-  const Geometry* geometry;      ///< for every other kind (and groups)
+  const std::uint32_t* ids;         ///< the global id of each slot
+  const Triangle* triangles;        ///< the Geometry's triangles, by global id
+  const Sphere* spheres;            ///< the Geometry's spheres, by global id - triangle_count
+  std::uint32_t triangle_count;     ///< global ids below this are triangles
+  std::uint32_t sphere_end;         ///< ids in [triangle_count, sphere_end) are spheres
+  const Geometry* geometry;         ///< for every other kind (and groups)
+  const CylinderFrames* cylinders;  ///< the frames of the structure's cylinders
 
-  /// The primitives of `g`, numbered by `slot_ids`.
-  GeometryPrimitives(const std::uint32_t* slot_ids, const Geometry& g)
+  /// The primitives of `g`, numbered by `slot_ids`, and the frames `frames` of its cylinders.
+  GeometryPrimitives(const std::uint32_t* slot_ids, const CylinderFrames& frames, const Geometry& g)
       : ids(slot_ids),
         triangles(g.triangles.data()),
         spheres(g.spheres.data()),
         triangle_count(static_cast<std::uint32_t>(g.triangles.size())),
         sphere_end(triangle_count + static_cast<std::uint32_t>(g.spheres.size())),
-        geometry(&g) {}
+        geometry(&g),
+        cylinders(&frames) {}
 
   /// The triangle with global id `id`.
   const Triangle& triangle(std::uint32_t /*slot*/, std::uint32_t id) const { return triangles[id]; }
@@ -188,10 +195,22 @@ inline bool intersect_sphere_here(const Sphere& sphere, std::uint32_t id, const 
   });
 }
 
+/// Tests primitive (or group) `id` of `prims`, neither a triangle nor an inline sphere: a
+/// cylinder from the structure's frame of it, anything else through the Geometry (with
+/// intersect_through_geometry's contract and, for the cylinder, bit for bit its answer).
+template <bool kAnyHit, class Primitives>
+inline bool intersect_other_kind(const Primitives& prims, std::uint32_t id, const WatertightRay& tri_ray,
+                                 const Ray& ray, float tmin, float& tmax, Hit& best) {
+  if (const CylinderFrame* frame = prims.cylinders->find(id)) {
+    return intersect_cylinder_frame<kAnyHit>(*frame, id, ray, tmin, tmax, best);
+  }
+  return intersect_through_geometry<kAnyHit>(*prims.geometry, id, tri_ray, ray, tmin, tmax, best);
+}
+
 /// Tests the references [begin, end) against `ray` restricted to [tmin, tmax): reference r is
 /// slot `slot_of(r)` of `prims`, skipped unless `mailbox.first_visit(slot)` (a slot that an
-/// earlier cell of the same ray already tested). Triangles and inline spheres are tested here,
-/// other kinds and groups through the Geometry; each test starts from the closest hit so far
+/// earlier cell of the same ray already tested). Triangles, inline spheres and cylinders are
+/// tested here, other kinds and groups through the Geometry; each test starts from the closest hit so far
 /// with the tie rule. Closest hit: on a hit shrinks `tmax` and updates `best`. With kAnyHit,
 /// returns at the first hit and leaves `tmax` and `best` alone. Returns whether anything was
 /// hit; counts the tests run in `counters.prim_tests` when kCount.
@@ -214,10 +233,10 @@ inline bool intersect_references(const Primitives& prims, std::uint32_t begin, s
       if (id < prims.sphere_end) {
         hit_here = intersect_sphere_here<kAnyHit>(prims.sphere(slot, id), id, ray, tmin, tmax, best);
       } else {
-        hit_here = intersect_through_geometry<kAnyHit>(*prims.geometry, id, tri_ray, ray, tmin, tmax, best);
+        hit_here = intersect_other_kind<kAnyHit>(prims, id, tri_ray, ray, tmin, tmax, best);
       }
     } else {
-      hit_here = intersect_through_geometry<kAnyHit>(*prims.geometry, id, tri_ray, ray, tmin, tmax, best);
+      hit_here = intersect_other_kind<kAnyHit>(prims, id, tri_ray, ray, tmin, tmax, best);
     }
     if (hit_here) {
       found = true;

@@ -210,6 +210,7 @@ Octree::Octree(const Geometry& geometry, std::span<const std::uint32_t> ids, con
   m_config.max_items = std::max(m_config.max_items, 0);
   m_config.max_depth = std::clamp(m_config.max_depth, 0, kOctreeDepthLimit);
   m_tree = build_octree(geometry, ids, m_config);
+  m_cylinder_frames = CylinderFrames::of(geometry, m_tree.ids);
   m_mailboxes = std::make_unique<Mailboxes>(static_cast<std::uint32_t>(m_tree.ids.size()));
   m_build_seconds = seconds_since(start);
 }
@@ -240,7 +241,7 @@ bool Octree::walk(Ray& ray, Hit& hit, TraversalStats* stats, OnCell&& on_cell) c
   const WatertightRay tri_ray(ray);
   const OctreeNode* const nodes = m_tree.nodes.data();
   const std::uint32_t* const refs = m_tree.refs.data();
-  const GeometryPrimitives prims(m_tree.ids.data(), m_geometry);
+  const GeometryPrimitives prims(m_tree.ids.data(), m_cylinder_frames, m_geometry);
   OptionalMailbox mailbox;
 
   // Tests the primitives of leaf `node` against the whole remaining ray (not just the cell's
@@ -378,9 +379,10 @@ AccelInfo Octree::info() const {
   AccelInfo info;
   info.name = "octree";
   info.build_seconds = m_build_seconds;
-  info.memory_bytes =
-      m_tree.nodes.capacity() * sizeof(OctreeNode) + m_tree.boxes.capacity() * sizeof(OctreeChildBoxes) +
-      (m_tree.refs.capacity() + m_tree.ids.capacity()) * sizeof(std::uint32_t) + m_mailboxes->bytes_per_thread();
+  info.memory_bytes = m_tree.nodes.capacity() * sizeof(OctreeNode) +
+                      m_tree.boxes.capacity() * sizeof(OctreeChildBoxes) +
+                      (m_tree.refs.capacity() + m_tree.ids.capacity()) * sizeof(std::uint32_t) +
+                      m_mailboxes->bytes_per_thread() + m_cylinder_frames.bytes();
   info.node_count = m_tree.nodes.size();
   info.leaf_count = m_tree.leaf_count;
   info.primitive_count = m_tree.ids.size();

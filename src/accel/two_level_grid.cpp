@@ -68,7 +68,7 @@ bool TwoLevelGrid::walk(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk& top
   const std::uint8_t* const leaf_skip = m_leaf_skip.data();
   const std::uint32_t* const refs = m_refs.data();
   const TopCell* const cells = m_top.data();
-  const SlotPrimitives prims(m_ids.data(), m_triangles, m_spheres, m_geometry);
+  const SlotPrimitives prims(m_ids.data(), m_triangles, m_spheres, m_cylinder_frames, m_geometry);
   const float tmin = ray.tmin;
   float tmax = ray.tmax;
   Hit best = hit;

@@ -279,6 +279,7 @@ void TwoLevelGrid::build() {
 
   // Copies of the triangles and spheres in the grid's own (spatial) order.
   copy_slot_primitives(m_geometry, m_ids, m_triangles, m_spheres);
+  m_cylinder_frames = CylinderFrames::of(m_geometry, m_ids);
   if (m_config.mailbox) m_mailboxes = std::make_unique<Mailboxes>(count);
 }
 
@@ -344,7 +345,8 @@ AccelInfo TwoLevelGrid::info() const {
   for (const auto& p : m_top_planes) planes += p.size();
   info.memory_bytes = sizeof(*this) + (m_offsets.size() + m_refs.size() + m_ids.size()) * sizeof(std::uint32_t) +
                       planes * sizeof(float) + m_top_skip.size() + m_leaf_skip.size() + m_top.size() * sizeof(TopCell) +
-                      m_triangles.size() * sizeof(Triangle) + m_spheres.size() * sizeof(Sphere);
+                      m_triangles.size() * sizeof(Triangle) + m_spheres.size() * sizeof(Sphere) +
+                      m_cylinder_frames.bytes();
   info.node_count = m_top.size() + leaf_cell_count();
   info.leaf_count = m_nonempty_leaf_cells;
   info.primitive_count = m_ids.size();

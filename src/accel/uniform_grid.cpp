@@ -66,7 +66,7 @@ bool UniformGrid::walk_cells(Ray& ray, Hit& hit, TraversalStats* stats, GridWalk
   const std::uint32_t* const offsets = m_offsets.data();
   const std::uint8_t* const skip = m_skip.data();
   const std::uint32_t* const refs = m_refs.data();
-  const SlotPrimitives prims(m_ids.data(), m_triangles, m_spheres, m_geometry);
+  const SlotPrimitives prims(m_ids.data(), m_triangles, m_spheres, m_cylinder_frames, m_geometry);
   const float tmin = ray.tmin;
   float tmax = ray.tmax;
   Hit best = hit;

@@ -198,6 +198,7 @@ void UniformGrid::build(std::array<int, 3> resolution) {
   // Copies of the triangles and spheres in the grid's own order, which is spatial: the
   // references of one cell then point to neighbouring entries instead of all over the scene.
   copy_slot_primitives(m_geometry, m_ids, m_triangles, m_spheres);
+  m_cylinder_frames = CylinderFrames::of(m_geometry, m_ids);
   if (m_config.mailbox) m_mailboxes = std::make_unique<Mailboxes>(count);
 }
 
@@ -230,7 +231,7 @@ AccelInfo UniformGrid::info() const {
   for (const auto& p : m_planes) planes += p.size();
   info.memory_bytes = sizeof(*this) + (m_offsets.size() + m_refs.size() + m_ids.size()) * sizeof(std::uint32_t) +
                       planes * sizeof(float) + m_skip.size() + m_triangles.size() * sizeof(Triangle) +
-                      m_spheres.size() * sizeof(Sphere);
+                      m_spheres.size() * sizeof(Sphere) + m_cylinder_frames.bytes();
   info.node_count = m_offsets.size() - 1;
   info.leaf_count = m_nonempty_cells;
   info.primitive_count = m_ids.size();

@@ -69,7 +69,7 @@ AccelInfo WideBvh<W>::info() const {
   const WideBvhLeaves& leaves = m_tree.leaves;
   info.memory_bytes =
       m_tree.nodes.size() * sizeof(WideBvhNode<W>) + leaves.blocks.size() * sizeof(TriangleBlock4) +
-      leaves.others.size() * sizeof(std::uint32_t) + leaves.cylinder_frames.size() * sizeof(CylinderFrame) +
+      leaves.others.size() * sizeof(std::uint32_t) + leaves.cylinder_frames.bytes() +
       (leaves.sphere_x.size() + leaves.sphere_y.size() + leaves.sphere_z.size() + leaves.sphere_radius.size()) *
           sizeof(float) +
       leaves.cylinder_lanes.bytes() + leaves.leaf_kinds.size() * sizeof(WideBvhLeaves::LeafKinds);

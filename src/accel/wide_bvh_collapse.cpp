@@ -82,25 +82,6 @@ bool is_interior_slot(const WideBvhNode<W>& node, int i) {
   return node.count[i] == 0 && node.child[i] != 0;
 }
 
-// Fills the leaves' cylinder frames for the range of cylinder ids among `ids` (a structure over
-// part of the scene, one object's, computes only its own), before any leaf is packed: the leaves'
-// cylinder lanes are copied from them.
-void prepare_cylinder_frames(const Geometry& geometry, std::span<const std::uint32_t> ids, WideBvhLeaves& leaves) {
-  const auto begin = static_cast<std::uint32_t>(geometry.triangles.size() + geometry.spheres.size());
-  const auto end = begin + static_cast<std::uint32_t>(geometry.cylinders.size());
-  std::uint32_t lo = end, hi = begin;
-  for (const std::uint32_t id : ids) {
-    if (id < begin || id >= end) continue;
-    lo = std::min(lo, id);
-    hi = std::max(hi, id + 1);
-  }
-  if (lo >= hi) return;
-  leaves.cylinder_begin = lo;
-  leaves.cylinder_frames.reserve(hi - lo);
-  for (std::uint32_t id = lo; id < hi; ++id)
-    leaves.cylinder_frames.push_back(cylinder_frame(geometry.cylinders[id - begin]));
-}
-
 template <int W, class PrimOf>
 class WideCollapser {
  public:
@@ -117,7 +98,8 @@ class WideCollapser {
   WideBvhTree<W> run() {
     WideBvhLeaves& leaves = m_out.leaves;
     leaves.triangle_count = static_cast<std::uint32_t>(m_geometry.triangles.size());
-    prepare_cylinder_frames(m_geometry, m_ids, leaves);
+    // Before any leaf is packed: the leaves' cylinder lanes are copied from the frames.
+    leaves.cylinder_frames = CylinderFrames::of(m_geometry, m_ids);
     if (m_tree.empty) {
       m_out.nodes.push_back(empty_node());  // nothing to hold: every slot empty
       return std::move(m_out);

@@ -514,7 +514,7 @@ void check_accelerator(const Geometry& g, const BvhConfig& config, const BvhTree
   // The sphere lanes: 16 bytes per position of `others` and 3 of padding, when a leaf holds a sphere.
   const std::size_t sphere_lane_bytes = wide.leaves.sphere_radius.empty() ? 0 : (wide.leaves.others.size() + 3) * 16;
   EXPECT_EQ(info.memory_bytes, info.node_count * W * 32 + wide.leaves.blocks.size() * 160 +
-                                   wide.leaves.others.size() * 4 + held.leaves.cylinder_frames.size() * 72 +
+                                   wide.leaves.others.size() * 4 + held.leaves.cylinder_frames.frames.size() * 72 +
                                    sphere_lane_bytes + wide.leaves.cylinder_lanes.bytes() +
                                    wide.leaves.leaf_kinds.size() * 2);
   EXPECT_EQ(wide.leaves.leaf_kinds.size(), wide.leaves.others.size());
@@ -956,20 +956,20 @@ TYPED_TEST(WideBvhTest, CylinderFramesCoverTheTreesCylinders) {
   };
   const WideBvh<W> whole(g);
   const WideBvhLeaves& leaves = whole.tree().leaves;
-  EXPECT_EQ(leaves.cylinder_begin, first);
-  ASSERT_EQ(leaves.cylinder_frames.size(), g.cylinders.size());
+  EXPECT_EQ(leaves.cylinder_frames.begin, first);
+  ASSERT_EQ(leaves.cylinder_frames.frames.size(), g.cylinders.size());
   for (std::size_t i = 0; i < g.cylinders.size(); ++i) {
-    EXPECT_TRUE(same(leaves.cylinder_frames[i], cylinder_frame(g.cylinders[i]))) << i;
+    EXPECT_TRUE(same(leaves.cylinder_frames.frames[i], cylinder_frame(g.cylinders[i]))) << i;
   }
   EXPECT_EQ(leaves.cylinder_frame_of(first - 1), nullptr);
   EXPECT_EQ(leaves.cylinder_frame_of(first + static_cast<std::uint32_t>(g.cylinders.size())), nullptr);
   const std::uint32_t part[] = {0, first + 2, first + 3, first + 4};
   const WideBvh<W> subset(g, part);
-  EXPECT_EQ(subset.tree().leaves.cylinder_begin, first + 2);
-  EXPECT_EQ(subset.tree().leaves.cylinder_frames.size(), 3u);
+  EXPECT_EQ(subset.tree().leaves.cylinder_frames.begin, first + 2);
+  EXPECT_EQ(subset.tree().leaves.cylinder_frames.frames.size(), 3u);
   Geometry no_cylinders;
   no_cylinders.add(Sphere{}, 0);
-  EXPECT_TRUE(WideBvh<W>(no_cylinders).tree().leaves.cylinder_frames.empty());
+  EXPECT_TRUE(WideBvh<W>(no_cylinders).tree().leaves.cylinder_frames.frames.empty());
 }
 
 TYPED_TEST(WideBvhTest, DegenerateGeometry) {

@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "raylab/accel/cylinder_frames.h"
 #include "raylab/accel/traversal_accelerator.h"
 #include "raylab/geometry/geometry.h"
 
@@ -98,6 +99,7 @@ class Bvh final : public TraversalAccelerator<Bvh> {
   const Geometry& m_geometry;
   BvhTree m_tree;
   std::vector<Triangle> m_leaf_triangles;  ///< parallel to prim_ids; unused slots for non-triangles
+  CylinderFrames m_cylinder_frames;        ///< the frames of the cylinders among the primitives
   std::uint32_t m_triangle_count = 0;      ///< prim ids below this are triangles
   double m_build_seconds = 0.0;
 };

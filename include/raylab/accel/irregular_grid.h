@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "raylab/accel/cell_walk.h"
+#include "raylab/accel/cylinder_frames.h"
 #include "raylab/accel/traversal_accelerator.h"
 #include "raylab/geometry/geometry.h"
 
@@ -163,6 +164,7 @@ class IrregularGrid final : public TraversalAccelerator<IrregularGrid>, public C
   IrregularGridData m_data;
   std::vector<Triangle> m_triangles;  ///< parallel to m_data.ids where they are triangles (else unused)
   std::vector<Sphere> m_spheres;      ///< parallel to m_data.ids where they are spheres (else unused)
+  CylinderFrames m_cylinder_frames;   ///< the frames of the cylinders among the primitives
   double m_build_seconds = 0.0;
   std::unique_ptr<Mailboxes> m_mailboxes;  ///< null when mailboxing is off
 };

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "raylab/accel/cell_walk.h"
+#include "raylab/accel/cylinder_frames.h"
 #include "raylab/accel/traversal_accelerator.h"
 #include "raylab/geometry/geometry.h"
 
@@ -171,6 +172,7 @@ class Octree final : public TraversalAccelerator<Octree>, public CellWalk {
   const Geometry& m_geometry;
   OctreeConfig m_config;
   OctreeTree m_tree;
+  CylinderFrames m_cylinder_frames;        ///< the frames of the cylinders among the primitives
   std::unique_ptr<Mailboxes> m_mailboxes;  ///< one slot per entry of m_tree.ids
   double m_build_seconds = 0.0;
 };

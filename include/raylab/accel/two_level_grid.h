@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "raylab/accel/cell_walk.h"
+#include "raylab/accel/cylinder_frames.h"
 #include "raylab/accel/traversal_accelerator.h"
 #include "raylab/geometry/geometry.h"
 
@@ -142,6 +143,7 @@ class TwoLevelGrid final : public TraversalAccelerator<TwoLevelGrid>, public Cel
   std::vector<std::uint32_t> m_ids;   ///< indexed primitives in spatial order; references point here
   std::vector<Triangle> m_triangles;  ///< parallel to m_ids where they are triangles (else unused)
   std::vector<Sphere> m_spheres;      ///< parallel to m_ids where they are spheres (else unused)
+  CylinderFrames m_cylinder_frames;   ///< the frames of the cylinders among the primitives
   Box3 m_bounds;
   std::array<int, 3> m_top_resolution{1, 1, 1};
   Vec3 m_top_cell{0.f, 0.f, 0.f};                  ///< top cell edge lengths

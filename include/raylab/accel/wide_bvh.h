@@ -12,6 +12,7 @@
 
 #include "raylab/accel/accelerator.h"
 #include "raylab/accel/bvh.h"
+#include "raylab/accel/cylinder_frames.h"
 #include "raylab/core/uninitialized_vector.h"
 #include "raylab/geometry/cylinder.h"
 #include "raylab/geometry/cylinder_lanes.h"
@@ -53,10 +54,8 @@ struct WideBvhLeaves {
   UninitializedVector<TriangleBlock4> blocks;  ///< triangles, leaf after leaf
   std::vector<std::uint32_t> others;           ///< ids of the other kinds (and headers), see above
   std::uint32_t triangle_count = 0;            ///< primitive ids below this are triangles
-  /// The frames of the cylinders the tree holds, for ids cylinder_begin and up (one per id of
-  /// that range, whether the tree holds it or not): what their test needs, computed at build.
-  std::vector<CylinderFrame> cylinder_frames;
-  std::uint32_t cylinder_begin = 0;  ///< the id of cylinder_frames[0]
+  /// The frames of the cylinders the tree holds: what their test needs, computed at build.
+  CylinderFrames cylinder_frames;
 
   /// The fewest spheres a leaf must hold for the traversal to test them as lanes of four; it
   /// tests fewer one by one. Callgrind, SPD protocol, 1 thread, against the one-by-one test:
@@ -99,10 +98,7 @@ struct WideBvhLeaves {
   std::vector<LeafKinds> leaf_kinds;
 
   /// The frame of primitive `id` when it is a cylinder with one, else null.
-  const CylinderFrame* cylinder_frame_of(std::uint32_t id) const {
-    const std::uint32_t i = id - cylinder_begin;  // wraps around below the range
-    return i < cylinder_frames.size() ? &cylinder_frames[i] : nullptr;
-  }
+  const CylinderFrame* cylinder_frame_of(std::uint32_t id) const { return cylinder_frames.find(id); }
 
   /// Whether no leaf holds anything (no ray can hit).
   bool empty() const { return blocks.empty() && others.empty(); }
