@@ -38,7 +38,7 @@ void PrimaryPacketTracer::trace(std::span<const Ray> rays, std::span<const std::
   }
 
   const std::size_t light_count = scene.lights.size();
-  std::fill_n(m_answers.begin(), n * light_count, ShadowAnswer::kTrace);
+  std::fill_n(m_answers.begin(), n * light_count, DecidedShadow{});
   for (std::size_t light : m_single_lights) trace_shadows(light, n);
 
   for (std::size_t i = 0; i < n; ++i) {
@@ -47,7 +47,7 @@ void PrimaryPacketTracer::trace(std::span<const Ray> rays, std::span<const std::
       continue;
     }
     Pcg32 rng(seeds[i]);
-    const std::span<const ShadowAnswer> answers(m_answers.data() + i * light_count, light_count);
+    const std::span<const DecidedShadow> answers(m_answers.data() + i * light_count, light_count);
     out[i] = handed_on(WhittedIntegrator::shade(m_ctx, m_rays[i], m_surfaces[i], 1, rng, answers));
   }
 }
@@ -58,8 +58,10 @@ void PrimaryPacketTracer::trace_shadows(std::size_t light, std::size_t lanes) {
   std::size_t count = 0;
   for (std::size_t i = 0; i < lanes; ++i) {
     if (!m_hits[i].valid()) continue;
-    if (!WhittedIntegrator::single_sample_shadow_ray(l, m_surfaces[i], m_ctx.shadow_facing, m_shadow_rays[count]))
+    if (!WhittedIntegrator::single_sample_shadow_ray(l, m_surfaces[i], m_ctx.shadow_facing, m_shadow_rays[count],
+                                                     m_answers[i * light_count + light].sample)) {
       continue;
+    }
     m_shadow_lane[count++] = static_cast<std::uint8_t>(i);
   }
   if (count == 0) return;
@@ -74,7 +76,8 @@ void PrimaryPacketTracer::trace_shadows(std::size_t light, std::size_t lanes) {
   for (std::size_t k = 0; k < count; ++k) {
     const bool blocked = m_blocked[k] != 0;
     m_ctx.stats.count(RayKind::kShadow, blocked);
-    m_answers[m_shadow_lane[k] * light_count + light] = blocked ? ShadowAnswer::kBlocked : ShadowAnswer::kVisible;
+    m_answers[m_shadow_lane[k] * light_count + light].answer =
+        blocked ? ShadowAnswer::kBlocked : ShadowAnswer::kVisible;
   }
 }
 

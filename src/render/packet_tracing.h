@@ -46,7 +46,7 @@ class PrimaryPacketTracer {
 
  private:
   // Any-hit answers for the shadow rays of the lanes that cast one toward single-sample light
-  // `light`, stored as each lane's ShadowAnswer for that light.
+  // `light`, stored with the light sample as each lane's DecidedShadow for that light.
   void trace_shadows(std::size_t light, std::size_t lanes);
 
   // The radiance `c` of a lane as it is handed on (see replace_nonfinite).
@@ -61,7 +61,7 @@ class PrimaryPacketTracer {
   std::array<Ray, kPacketSize> m_shadow_rays;
   std::array<std::uint8_t, kPacketSize> m_shadow_lane;  // lane of each gathered shadow ray
   std::array<std::uint8_t, kPacketSize> m_blocked;
-  std::vector<ShadowAnswer> m_answers;  // lane * light count + light
+  std::vector<DecidedShadow> m_answers;  // lane * light count + light
 };
 
 /// The uniform pixel loop of one tile, with its primary rays traced as packets: the colour of

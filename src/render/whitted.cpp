@@ -33,13 +33,6 @@ Color phong(const Material& m, Color base, Vec3 n, Vec3 view, Vec3 wi, Color li)
   return c * li;
 }
 
-// One light sample: position (or direction for directional lights) and what arrives from it.
-struct LightSample {
-  Vec3 wi;         // unit direction to the light
-  float distance;  // to the sample point (infinity for directional lights)
-  Color radiance;  // intensity share of this sample
-};
-
 // Side of the square grid of stratified samples shading takes of `light` (1 for point and
 // directional lights).
 int sample_grid(const Light& light) {
@@ -107,19 +100,24 @@ bool sample_light(const Light& light, int grid, int sx, int sy, const ShadingPoi
 }
 
 // Contribution of `light` at the shading point, averaging stratified positions for area lights:
-// a soft shadow is the fraction of the light's samples that the point sees. `answer` replaces
-// the shadow ray when it is decided (single-sample lights only).
+// a soft shadow is the fraction of the light's samples that the point sees. `decided` replaces
+// the sampling and the shadow ray when it is decided (single-sample lights only).
 Color shade_light(const TraceContext& ctx, const Light& light, const Material& m, Color base, const ShadingPoint& at,
-                  Vec3 view, Pcg32& rng, ShadowAnswer answer) {
+                  Vec3 view, Pcg32& rng, const DecidedShadow& decided) {
   const int grid = sample_grid(light);
   Color sum{0.f};
   for (int sy = 0; sy < grid; ++sy) {
     for (int sx = 0; sx < grid; ++sx) {
       LightSample ls;
-      Ray shadow;
-      if (!sample_light(light, grid, sx, sy, at, &rng, ls, shadow)) continue;
-      const bool blocked =
-          answer == ShadowAnswer::kTrace ? cast_shadow_ray(ctx, shadow) : answer == ShadowAnswer::kBlocked;
+      bool blocked;
+      if (decided.answer == ShadowAnswer::kTrace) {
+        Ray shadow;
+        if (!sample_light(light, grid, sx, sy, at, &rng, ls, shadow)) continue;
+        blocked = cast_shadow_ray(ctx, shadow);
+      } else {
+        ls = decided.sample;  // what sample_light gave the packet path (grid is 1)
+        blocked = decided.answer == ShadowAnswer::kBlocked;
+      }
       // Light reaches only the side the ray sees (under the outward reading a shadow ray can be
       // cast from a back face toward a light on the other side: it is counted, and adds nothing).
       if (blocked) continue;
@@ -142,9 +140,8 @@ Color WhittedIntegrator::background(const RenderSettings& s, Vec3 dir) {
 bool WhittedIntegrator::is_single_sample(const Light& light) { return sample_grid(light) == 1; }
 
 bool WhittedIntegrator::single_sample_shadow_ray(const Light& light, const SurfaceInteraction& si, ShadowFacing facing,
-                                                 Ray& shadow) {
-  LightSample ls;
-  return sample_light(light, 1, 0, 0, shading_point(si, facing), nullptr, ls, shadow);
+                                                 Ray& shadow, LightSample& sample) {
+  return sample_light(light, 1, 0, 0, shading_point(si, facing), nullptr, sample, shadow);
 }
 
 Color WhittedIntegrator::radiance(const TraceContext& ctx, const Ray& ray, SampleSource& samples,
@@ -163,7 +160,7 @@ Color WhittedIntegrator::trace(const TraceContext& ctx, Ray ray, int depth, RayK
 }
 
 Color WhittedIntegrator::shade(const TraceContext& ctx, const Ray& ray, const SurfaceInteraction& si, int depth,
-                               Pcg32& rng, std::span<const ShadowAnswer> shadows, PrimaryFeature* feature) {
+                               Pcg32& rng, std::span<const DecidedShadow> shadows, PrimaryFeature* feature) {
   const Scene& scene = ctx.scene;
   const Material& m = scene.materials[scene.objects[si.object_id].material];
   const Vec3 d = normalize(ray.direction);
@@ -179,8 +176,8 @@ Color WhittedIntegrator::shade(const TraceContext& ctx, const Ray& ray, const Su
   Color result = m.emission + scene.settings.ambient * base * m.kd;
   const ShadingPoint at = shading_point(si, ctx.shadow_facing);
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-    const ShadowAnswer answer = shadows.empty() ? ShadowAnswer::kTrace : shadows[l];
-    result += shade_light(ctx, scene.lights[l], m, base, at, view, rng, answer);
+    const DecidedShadow decided = shadows.empty() ? DecidedShadow{} : shadows[l];
+    result += shade_light(ctx, scene.lights[l], m, base, at, view, rng, decided);
   }
 
   // Capped whatever the settings say: each level is a frame of this recursion on the stack.

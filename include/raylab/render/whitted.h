@@ -21,6 +21,20 @@ enum class ShadowAnswer : std::uint8_t {
   kBlocked,    ///< the single shadow ray toward this light is blocked (already counted)
 };
 
+/// One sample of a light as shading sees it from a point.
+struct LightSample {
+  Vec3 wi;         ///< unit direction to the light
+  float distance;  ///< to the sample point (infinity for directional lights)
+  Color radiance;  ///< what arrives from the sample (the light's intensity share, falloff, spot cone)
+};
+
+/// A single-sample light's shadow test decided before shading, with the light sample it was
+/// decided for, so that shading does not sample the light again.
+struct DecidedShadow {
+  ShadowAnswer answer = ShadowAnswer::kTrace;  ///< kTrace: nothing decided (`sample` unused)
+  LightSample sample{};                        ///< single_sample_shadow_ray's sample
+};
+
 /// Whitted-style recursive ray tracer.
 ///  - Depth: a ray at depth `max_depth` is the last; secondary rays start at depth 2.
 ///  - Shadow rays are cast only when the surface faces the light (N.L > 0), N chosen by
@@ -55,20 +69,22 @@ class WhittedIntegrator final : public Integrator {
   /// What trace() does once the closest hit of `ray` is known: the radiance leaving surface
   /// point `si` (found by `ray`, of depth `depth`) back along `ray`, reflection and refraction
   /// included. `shadows` is empty (every light casts its own shadow rays) or holds one answer per
-  /// light of the scene; a decided answer replaces the shadow ray of a single-sample light (see
-  /// single_sample_shadow_ray), and is used only where that function returns true. trace() is
-  /// exactly count + intersect + this, so both give the same bits.
+  /// light of the scene; a decided answer replaces the sampling and the shadow ray of a
+  /// single-sample light, and is given only where single_sample_shadow_ray returned true (with
+  /// the sample it gave). trace() is exactly count + intersect + this, so both give the same
+  /// bits.
   static Color shade(const TraceContext& ctx, const Ray& ray, const SurfaceInteraction& si, int depth, Pcg32& rng,
-                     std::span<const ShadowAnswer> shadows = {}, PrimaryFeature* feature = nullptr);
+                     std::span<const DecidedShadow> shadows = {}, PrimaryFeature* feature = nullptr);
 
   /// True when shading toward `light` casts one shadow ray at a fixed position and draws no random
   /// numbers: point and directional lights, and area lights whose `samples` round to a 1x1 grid.
   static bool is_single_sample(const Light& light);
 
-  /// The shadow ray shading casts toward single-sample `light` from `si`, in `shadow`; false when
-  /// it casts none (the surface faces away from the light by the `facing` rule, or sits on it).
+  /// The shadow ray shading casts toward single-sample `light` from `si`, in `shadow`, and the
+  /// light sample it is cast for, in `sample`; false when it casts none (the surface faces away
+  /// from the light by the `facing` rule, or sits on it).
   static bool single_sample_shadow_ray(const Light& light, const SurfaceInteraction& si, ShadowFacing facing,
-                                       Ray& shadow);
+                                       Ray& shadow, LightSample& sample);
 
   /// The background seen by a ray leaving in direction `dir`.
   static Color background(const RenderSettings& s, Vec3 dir);
