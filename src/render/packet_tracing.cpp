@@ -38,7 +38,8 @@ void PrimaryPacketTracer::trace(std::span<const Ray> rays, std::span<const std::
   }
 
   const std::size_t light_count = scene.lights.size();
-  std::fill_n(m_answers.begin(), n * light_count, DecidedShadow{});
+  // Only the answers: a sample is read only where its answer is decided.
+  for (std::size_t k = 0; k < n * light_count; ++k) m_answers[k].answer = ShadowAnswer::kTrace;
   for (std::size_t light : m_single_lights) trace_shadows(light, n);
 
   for (std::size_t i = 0; i < n; ++i) {
