@@ -14,8 +14,10 @@
 
 #include "raylab/core/ray.h"
 #include "raylab/geometry/cylinder.h"
+#include "raylab/geometry/ray_lanes.h"
 #include "raylab/simd/float4.h"
 #include "raylab/simd/isa_namespace.h"
+#include "raylab/simd/wide_float.h"
 
 namespace raylab {
 
@@ -81,6 +83,49 @@ class CylinderLaneArrays {
 
 RAYLAB_ISA_BEGIN
 
+/// What the float rejection needs of cylinders, lane by lane (broadcast where the lanes share one).
+template <int N>
+struct CylinderRejectLanes {
+  simd::WideFloat<N> base_x, base_y, base_z;  ///< the base points
+  simd::WideFloat<N> axis_x, axis_y, axis_z;  ///< the unit axes in float (CylinderFrame::axis)
+  simd::WideFloat<N> reject_radius;           ///< CylinderFrame::reject_radius
+};
+
+/// `cylinder_surely_missed`'s rule lane by lane, each lane a (ray, cylinder) pair: the mask of
+/// the lanes of `judged` whose line surely misses the cylinder. `d_sq` is each lane's squared
+/// direction length, and `judged` holds only lanes where it lies in [1e-12, 1e12] (the caller
+/// tests that, once for a ray or lane by lane). The float operations and their order are the
+/// scalar rule's (the cross product and dot products component by component as Vec3's, |x| as
+/// copysign(x, +0)), so each lane's answer is the scalar one bit for bit. The one rule of both
+/// forms: four cylinders against one ray, and one cylinder against N rays (cylinder_rays.h).
+template <int N>
+[[gnu::always_inline]] inline unsigned lines_surely_missing_cylinders(const RayLanes<N>& rays,
+                                                                      const simd::WideFloat<N>& d_sq,
+                                                                      const CylinderRejectLanes<N>& cylinders,
+                                                                      unsigned judged) {
+  using F = simd::WideFloat<N>;
+  if (judged == 0) return 0;
+  const F &dx = rays.dx, &dy = rays.dy, &dz = rays.dz;
+  const F &ax = cylinders.axis_x, &ay = cylinders.axis_y, &az = cylinders.axis_z;
+  // n = cross(d, axis), component by component as Vec3's cross.
+  const F nx = dy * az - dz * ay, ny = dz * ax - dx * az, nz = dx * ay - dy * ax;
+  const F n_sq = nx * nx + ny * ny + nz * nz;
+  // Comparisons are false on NaN: such lanes are never rejected.
+  judged &= less_equal_mask(F::broadcast(detail::kCylinderRejectMinSine * detail::kCylinderRejectMinSine) * d_sq, n_sq);
+  if (judged == 0) return 0;
+  const F fx = rays.ox - cylinders.base_x;
+  const F fy = rays.oy - cylinders.base_y;
+  const F fz = rays.oz - cylinders.base_z;
+  const F along_n = fx * nx + fy * ny + fz * nz;
+  const F& radius = cylinders.reject_radius;
+  const F zero = F::broadcast(0.f);  // copysign(x, +0) is |x|, as std::fabs
+  const F reach = radius + F::broadcast(detail::kCylinderRejectMargin) *
+                               (copysign(fx, zero) + copysign(fy, zero) + copysign(fz, zero) + radius);
+  const F far_sq = along_n * along_n;
+  return judged & less_mask(reach * reach * n_sq, far_sq) & less_equal_mask(F::broadcast(1e-30f), far_sq) &
+         less_equal_mask(far_sq, F::broadcast(1e30f));
+}
+
 /// `cylinder_surely_missed` on the lanes `lanes` of `cylinders`: the mask of the lanes whose
 /// cylinder the line of `ray` surely misses. Lanes outside `lanes` are 0.
 [[gnu::always_inline]] inline int cylinders_surely_missed(const CylinderLanes& cylinders, int lanes, const Ray& ray) {
@@ -89,27 +134,15 @@ RAYLAB_ISA_BEGIN
   const float d_sq = dot(d, d);
   // Comparisons are false on NaN: such rays are never rejected.
   if (!(d_sq >= 1e-12f && d_sq <= 1e12f)) return 0;
-  const Float4 dx = Float4::broadcast(d.x), dy = Float4::broadcast(d.y), dz = Float4::broadcast(d.z);
-  const Float4 ax = Float4::load(cylinders.axis_x), ay = Float4::load(cylinders.axis_y),
-               az = Float4::load(cylinders.axis_z);
-  // n = cross(d, axis), component by component as Vec3's cross.
-  const Float4 nx = dy * az - dz * ay, ny = dz * ax - dx * az, nz = dx * ay - dy * ax;
-  const Float4 n_sq = nx * nx + ny * ny + nz * nz;
-  const int judged =
-      lanes &
-      less_equal_mask(Float4::broadcast(detail::kCylinderRejectMinSine * detail::kCylinderRejectMinSine * d_sq), n_sq);
-  if (judged == 0) return 0;
-  const Float4 fx = Float4::broadcast(ray.origin.x) - Float4::load(cylinders.base_x);
-  const Float4 fy = Float4::broadcast(ray.origin.y) - Float4::load(cylinders.base_y);
-  const Float4 fz = Float4::broadcast(ray.origin.z) - Float4::load(cylinders.base_z);
-  const Float4 along_n = fx * nx + fy * ny + fz * nz;
-  const Float4 radius = Float4::load(cylinders.reject_radius);
-  const Float4 zero = Float4::broadcast(0.f);  // copysign(x, +0) is |x|, as std::fabs
-  const Float4 reach = radius + Float4::broadcast(detail::kCylinderRejectMargin) *
-                                    (copysign(fx, zero) + copysign(fy, zero) + copysign(fz, zero) + radius);
-  const Float4 far_sq = along_n * along_n;
-  return judged & less_mask(reach * reach * n_sq, far_sq) & less_equal_mask(Float4::broadcast(1e-30f), far_sq) &
-         less_equal_mask(far_sq, Float4::broadcast(1e30f));
+  const RayLanes<4> line{Float4::broadcast(ray.origin.x), Float4::broadcast(ray.origin.y),
+                         Float4::broadcast(ray.origin.z), Float4::broadcast(d.x),
+                         Float4::broadcast(d.y),          Float4::broadcast(d.z)};
+  const CylinderRejectLanes<4> four{Float4::load(cylinders.base_x),       Float4::load(cylinders.base_y),
+                                    Float4::load(cylinders.base_z),       Float4::load(cylinders.axis_x),
+                                    Float4::load(cylinders.axis_y),       Float4::load(cylinders.axis_z),
+                                    Float4::load(cylinders.reject_radius)};
+  return static_cast<int>(
+      lines_surely_missing_cylinders<4>(line, Float4::broadcast(d_sq), four, static_cast<unsigned>(lanes)));
 }
 
 RAYLAB_ISA_END

@@ -6,6 +6,7 @@
 /// turn away go to `intersect_cylinder_exact` one by one.
 
 #include "raylab/geometry/cylinder.h"
+#include "raylab/geometry/cylinder_lanes.h"
 #include "raylab/geometry/ray_lanes.h"
 #include "raylab/simd/isa_namespace.h"
 #include "raylab/simd/wide_float.h"
@@ -22,25 +23,13 @@ template <int N>
   const F &dx = rays.dx, &dy = rays.dy, &dz = rays.dz;
   const F d_sq = dx * dx + dy * dy + dz * dz;
   // Comparisons are false on NaN: such rays are never rejected.
-  unsigned judged = lanes & less_equal_mask(F::broadcast(1e-12f), d_sq) & less_equal_mask(d_sq, F::broadcast(1e12f));
-  if (judged == 0) return 0;
-  const F ax = F::broadcast(frame.axis.x), ay = F::broadcast(frame.axis.y), az = F::broadcast(frame.axis.z);
-  // n = cross(d, axis), component by component as Vec3's cross.
-  const F nx = dy * az - dz * ay, ny = dz * ax - dx * az, nz = dx * ay - dy * ax;
-  const F n_sq = nx * nx + ny * ny + nz * nz;
-  judged &= less_equal_mask(F::broadcast(detail::kCylinderRejectMinSine * detail::kCylinderRejectMinSine) * d_sq, n_sq);
-  if (judged == 0) return 0;
-  const F fx = rays.ox - F::broadcast(frame.base.x);
-  const F fy = rays.oy - F::broadcast(frame.base.y);
-  const F fz = rays.oz - F::broadcast(frame.base.z);
-  const F along_n = fx * nx + fy * ny + fz * nz;
-  const F radius = F::broadcast(frame.reject_radius);
-  const F zero = F::broadcast(0.f);  // copysign(x, +0) is |x|, as std::fabs
-  const F reach = radius + F::broadcast(detail::kCylinderRejectMargin) *
-                               (copysign(fx, zero) + copysign(fy, zero) + copysign(fz, zero) + radius);
-  const F far_sq = along_n * along_n;
-  return judged & less_mask(reach * reach * n_sq, far_sq) & less_equal_mask(F::broadcast(1e-30f), far_sq) &
-         less_equal_mask(far_sq, F::broadcast(1e30f));
+  const unsigned judged =
+      lanes & less_equal_mask(F::broadcast(1e-12f), d_sq) & less_equal_mask(d_sq, F::broadcast(1e12f));
+  const CylinderRejectLanes<N> one{F::broadcast(frame.base.x),       F::broadcast(frame.base.y),
+                                   F::broadcast(frame.base.z),       F::broadcast(frame.axis.x),
+                                   F::broadcast(frame.axis.y),       F::broadcast(frame.axis.z),
+                                   F::broadcast(frame.reject_radius)};
+  return lines_surely_missing_cylinders<N>(rays, d_sq, one, judged);
 }
 
 RAYLAB_ISA_END
