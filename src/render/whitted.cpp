@@ -175,8 +175,8 @@ Color WhittedIntegrator::shade(const TraceContext& ctx, const Ray& ray, const Su
 
   Color result = m.emission + scene.settings.ambient * base * m.kd;
   const ShadingPoint at = shading_point(si, ctx.shadow_facing);
+  static constexpr DecidedShadow kUndecided{};
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-    static constexpr DecidedShadow kUndecided{};
     const DecidedShadow& decided = shadows.empty() ? kUndecided : shadows[l];
     result += shade_light(ctx, scene.lights[l], m, base, at, view, rng, decided);
   }

@@ -26,7 +26,7 @@ struct RayLanes {
 
   /// The ray of lane `lane` (origin and direction; the default interval), bit for bit.
   Ray ray(int lane) const {
-    alignas(64) float lanes[6][N];
+    alignas(N * sizeof(float)) float lanes[6][N];
     ox.store(lanes[0]);
     oy.store(lanes[1]);
     oz.store(lanes[2]);
