@@ -1,6 +1,7 @@
 # The two commands of README.md. Each installs what is missing, configures and builds.
 #   make demo   renders the built-in scene to demo.png and builds the Python module
 #   make test   builds everything and runs the whole test suite
+#   make wheel  builds the Python wheel (pip install . does the same and installs it)
 # CMAKE_ARGS adds configure options, e.g. make test CMAKE_ARGS=-DRAYLAB_WERROR=ON
 
 PRESET ?= release
@@ -8,7 +9,7 @@ BUILD_DIR := build/$(PRESET)
 CMAKE_ARGS ?=
 JOBS ?= $(shell nproc)
 
-.PHONY: deps configure demo test bench fuzz format clean
+.PHONY: deps configure demo test wheel bench fuzz format clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -26,6 +27,11 @@ demo: configure
 test: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
+
+# The Python wheel (pyproject.toml, setup.py) in build/dist, built offline with Debian's
+# setuptools through its own CMake build in build/wheel: pip install build/dist/raylab-*.whl.
+wheel: deps
+	/usr/bin/python3 -m pip wheel --no-build-isolation --no-deps -w build/dist .
 
 bench: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)

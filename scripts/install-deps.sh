@@ -17,6 +17,12 @@ packages=(
   clang                # libFuzzer targets (make fuzz)
   python3-jsonschema   # the test that validates shipped scenes against scenes/scene.schema.json
   pybind11-dev python3-dev python3-numpy python3-pytest   # the Python module (python/) and its tests
+  # pip install . and the wheel test (pyproject.toml, setup.py, tests/install/wheel_test.sh):
+  # the build backend and requirements for --no-build-isolation, venv, pip and python -m build
+  python3-setuptools python3-wheel python3-pybind11 python3-venv python3-pip python3-build
+  # Debian's libimath-dev exports the PyImath target, whose library ships in python3-imath:
+  # without it every configure that finds OpenEXR warns that the file does not exist
+  python3-imath
 )
 
 missing=()

@@ -11,43 +11,9 @@ See docs/python.md for the walk-through.
 
 
 from ._build import ARCH as _ARCH  # noqa: E402
+from ._cpu_check import require_cpu as _require_cpu  # noqa: E402
 
-# What each -march level needs beyond baseline x86-64, as /proc/cpuinfo names it. The default
-# build (x86-64) needs nothing more and picks its wider kernels at run time; a "native" build
-# is checked for at least what x86-64-v3 needs.
-_V3 = ("sse4_2", "popcnt", "avx", "avx2", "fma", "bmi1", "bmi2", "f16c", "movbe")
-_NEEDED = {
-    "x86-64": (),
-    "x86-64-v2": ("sse4_2", "popcnt"),
-    "x86-64-v3": _V3,
-    "x86-64-v4": _V3 + ("avx512f", "avx512vl", "avx512bw", "avx512dq", "avx512cd"),
-}
-
-
-def _missing_cpu_features():
-    """The instruction-set features the compiled module needs that this CPU lacks (Linux x86)."""
-    needed = _NEEDED.get(_ARCH, _V3)
-    if not needed:
-        return []
-    try:
-        with open("/proc/cpuinfo", encoding="ascii", errors="replace") as info:
-            for line in info:
-                if line.startswith("flags"):
-                    flags = set(line.split(":", 1)[1].split())
-                    return [f for f in needed if f not in flags]
-    except OSError:
-        pass
-    return []
-
-
-_missing = _missing_cpu_features()
-if _missing:
-    # Importing the extension would end in SIGILL: say why instead.
-    raise ImportError(
-        "raylab was built for " + _ARCH + " and this CPU lacks "
-        + ", ".join(_missing)
-        + "; rebuild with cmake -DRAYLAB_ARCH=x86-64"
-    )
+_require_cpu(_ARCH)
 
 from ._raylab import (  # noqa: E402  (after the CPU check, on purpose)
     Mesh,

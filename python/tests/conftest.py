@@ -58,3 +58,15 @@ def binary():
     if not path or not os.path.exists(path):
         pytest.skip("RAYLAB_BINARY not set")
     return path
+
+
+@pytest.fixture(scope="session", autouse=True)
+def tested_package_is_the_expected_one():
+    """Where RAYLAB_EXPECT_PACKAGE_UNDER names a folder (the wheel test, tests/install/wheel_test.sh),
+    the raylab under test must have been imported from it, not from a source or build tree."""
+    expected = os.environ.get("RAYLAB_EXPECT_PACKAGE_UNDER")
+    if expected:
+        import raylab
+
+        where = pathlib.Path(raylab.__file__).resolve()
+        assert where.is_relative_to(pathlib.Path(expected).resolve()), f"raylab imported from {where}, not under {expected}"

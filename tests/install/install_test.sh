@@ -65,7 +65,7 @@ expected_others=$(
   done
   echo bin/raylab
   if [ -n "$pydir" ]; then
-    for f in __init__.py __init__.pyi py.typed _build.py; do echo "$pydir/raylab/$f"; done
+    for f in __init__.py __init__.pyi py.typed _build.py _cpu_check.py; do echo "$pydir/raylab/$f"; done
     (cd "$build/python/raylab" && ls _raylab*.so | sed "s|^|$pydir/raylab/|")
   fi
 )
