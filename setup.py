@@ -48,8 +48,31 @@ def pybind11_cmake_dir():
     return pybind11.get_cmake_dir()
 
 
+# What CMakeBuild lays beside the extension, relative to the package folder.
+BESIDE_EXTENSION = ("_build.py", "lib/libraylab.so.0", "lib/libraylab_dist.so.0", "bin/raylab")
+
+
 class CMakeBuild(build_ext):
     """Builds the extension with CMake and puts the library and the command beside it."""
+
+    def beside_extension(self):
+        """(built, in the source tree) pairs of the files laid beside the extension, for an
+        editable install (`pip install -e .`), which copies the extension back into python/raylab."""
+        built = pathlib.Path(self.build_lib) / "raylab"
+        in_source = pathlib.Path(self.get_finalized_command("build_py").get_package_dir("raylab"))
+        return [(str(built / name), str(in_source / name)) for name in BESIDE_EXTENSION]
+
+    def copy_extensions_to_source(self):
+        super().copy_extensions_to_source()
+        for built, in_source in self.beside_extension():
+            pathlib.Path(in_source).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(built, in_source)
+
+    def get_output_mapping(self):
+        mapping = super().get_output_mapping()
+        if self.inplace:
+            mapping.update(self.beside_extension())
+        return mapping
 
     def build_extension(self, ext):
         build_dir = pathlib.Path(os.environ.get("RAYLAB_WHEEL_BUILD_DIR", SOURCE_DIR / "build" / "wheel"))

@@ -136,7 +136,12 @@ RAYLAB_EXPECT_PACKAGE_UNDER=$venv RAYLAB_SOURCE_DIR=$source RAYLAB_BINARY=$venv/
 
 step "the raylab command the wheel brings"
 # Only the environment's bin on PATH beside the system's: no LD_LIBRARY_PATH, no build tree.
-run_installed() { env -i PATH="$venv/bin:/usr/bin:/bin" "$@"; }
+run_installed_from() {
+  local environment=$1
+  shift
+  env -i PATH="$environment/bin:/usr/bin:/bin" "$@"
+}
+run_installed() { run_installed_from "$venv" "$@"; }
 [ "$(run_installed raylab --version | head -n 1)" = "raylab $version" ] || fail "installed raylab --version"
 run_installed raylab render demo --width 64 --height 48 -q -o "$outside/demo.png" || fail "installed raylab render"
 [ "$(head -c 8 "$outside/demo.png" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] || fail "demo.png is not a PNG"
@@ -166,5 +171,15 @@ step "pip uninstall leaves the environment as it was"
 logged "$tmp/uninstall.log" "pip uninstall failed" "$venv/bin/python" -m pip uninstall -y raylab
 snapshot >"$tmp/venv-after.txt"
 diff "$tmp/venv-before.txt" "$tmp/venv-after.txt" >&2 || fail "pip uninstall left files behind (> above)"
+
+step "an editable install (pip install -e) of the copy"
+# The extension, the library and the command are copied back into the copy's python/raylab.
+editable=$tmp/editable
+"$python" -m venv --system-site-packages "$editable"
+(cd "$copy" && logged "$tmp/editable.log" "pip install -e failed" \
+  "$editable/bin/python" -m pip install --no-build-isolation -e .)
+"$editable/bin/python" -c "import raylab; print(raylab.__file__); assert raylab.render" | grep -qx "$copy/python/raylab/__init__.py" ||
+  fail "the editable install does not import from $copy/python/raylab"
+[ "$(run_installed_from "$editable" raylab --version | head -n 1)" = "raylab $version" ] || fail "editable raylab --version"
 
 echo "wheel test: ok in $((SECONDS - start)) s"
