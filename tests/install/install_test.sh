@@ -11,22 +11,9 @@ cxx=$3
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/raylab-install.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 prefix=$tmp/prefix
-start=$SECONDS
 
-step() { echo "== $* (at $((SECONDS - start)) s)"; }
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-# Runs "$@" with its output to LOG; on failure shows the log and fails with MESSAGE.
-logged() {
-  local log=$1 message=$2
-  shift 2
-  "$@" >"$log" 2>&1 || {
-    cat "$log" >&2
-    fail "$message"
-  }
-}
+# step, fail, logged
+source "$(dirname "${BASH_SOURCE[0]}")/script_steps.sh"
 
 version=$(sed -n 's/^#define RAYLAB_VERSION_STRING "\(.*\)"$/\1/p' "$build/include/raylab/version.h")
 libdir=$(sed -n 's/^CMAKE_INSTALL_LIBDIR:[A-Z]*=//p' "$build/CMakeCache.txt")
@@ -178,4 +165,4 @@ if [ -n "$pydir" ]; then
   env -i PYTHONPATH="$tmp/moved/$pydir" "$python" -c "$import_check" || fail "moved module"
 fi
 
-echo "install test: ok in $((SECONDS - start)) s"
+echo "install test: ok in $((SECONDS - script_start)) s"

@@ -10,22 +10,9 @@ build=$(cd "$1" && pwd)
 source=$(cd "$2" && pwd)
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/raylab-wheel.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
-start=$SECONDS
 
-step() { echo "== $* (at $((SECONDS - start)) s)"; }
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-# Runs "$@" with its output to LOG; on failure shows the log and fails with MESSAGE.
-logged() {
-  local log=$1 message=$2
-  shift 2
-  "$@" >"$log" 2>&1 || {
-    cat "$log" >&2
-    fail "$message"
-  }
-}
+# step, fail, logged
+source "$(dirname "${BASH_SOURCE[0]}")/script_steps.sh"
 cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt"; }
 
 python=$(cache_value RAYLAB_PYTHON)
@@ -182,4 +169,4 @@ editable=$tmp/editable
   fail "the editable install does not import from $copy/python/raylab"
 [ "$(run_installed_from "$editable" raylab --version | head -n 1)" = "raylab $version" ] || fail "editable raylab --version"
 
-echo "wheel test: ok in $((SECONDS - start)) s"
+echo "wheel test: ok in $((SECONDS - script_start)) s"
