@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 
 #include "raylab/core/error.h"
 #include "raylab/io/atomic_file.h"
@@ -51,16 +52,16 @@ std::vector<unsigned char> encode_png(const Film& film) {
 // PFM: a text header, then little-endian float rows from the bottom of the image up.
 std::vector<unsigned char> encode_pfm(const Film& film) {
   const std::string header = "PF\n" + std::to_string(film.width()) + " " + std::to_string(film.height()) + "\n-1.0\n";
-  std::vector<unsigned char> out(header.begin(), header.end());
-  out.reserve(out.size() + std::size_t(film.width()) * film.height() * 12);
-  for (int y = film.height() - 1; y >= 0; --y) {
-    for (int x = 0; x < film.width(); ++x) {
-      const Color c = film.at(x, y);
-      const float v[3] = {c.x, c.y, c.z};
-      const auto* b = reinterpret_cast<const unsigned char*>(v);
-      out.insert(out.end(), b, b + sizeof v);
-    }
-  }
+  // A film row is already the file's row (three floats a pixel, in this machine's little-endian
+  // order): each is copied whole. Appending pixel by pixel cost 36 instructions a pixel more,
+  // 3.6% of the whole process on SPD tetra (callgrind, docs/performance.md).
+  static_assert(sizeof(Color) == 3 * sizeof(float) && std::is_trivially_copyable_v<Color>);
+  const std::size_t row_bytes = std::size_t(film.width()) * sizeof(Color);
+  std::vector<unsigned char> out(header.size() + row_bytes * std::size_t(film.height()));
+  std::memcpy(out.data(), header.data(), header.size());
+  unsigned char* row = out.data() + header.size();
+  if (row_bytes == 0) return out;  // an empty film has no row to take the address of
+  for (int y = film.height() - 1; y >= 0; --y, row += row_bytes) std::memcpy(row, &film.at(0, y), row_bytes);
   return out;
 }
 
