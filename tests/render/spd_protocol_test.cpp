@@ -10,6 +10,7 @@
 #include "raylab/accel/factory.h"
 #include "raylab/accel/two_level.h"
 #include "raylab/render/spd_protocol.h"
+#include "raylab/render/whitted.h"
 #include "raylab/scene/spd.h"
 
 namespace raylab {
@@ -126,6 +127,42 @@ TEST(SpdProtocolImage, PixelsAreTheAverageOfTheirFourCorners) {
   EXPECT_EQ(scene.settings.width, 512);
   EXPECT_EQ(scene.settings.max_depth, 5);
   EXPECT_EQ(r.counts.primary, 513u * 513u);
+}
+
+// Each corner's generator is seeded (from the render's seed and the corner) only when a light
+// draws random numbers. With an area light the seed must reach the samples, so two seeds give
+// two images; with the point lights of an SPD scene no number is drawn and the seed is moot.
+TEST(SpdProtocolImage, TheSeedReachesAreaLightsAndOnlyThem) {
+  const auto render_with_seed = [](Scene scene, std::uint64_t seed) {
+    scene.settings.seed = seed;
+    const auto accel = make_accelerator("bvh", scene.geometry);
+    Film film(kSpdProtocolSize, kSpdProtocolSize);
+    RenderOptions options;
+    options.threads = 2;
+    render_spd_protocol(scene, *accel, film, options);
+    return film;
+  };
+  const auto differing_pixels = [](const Film& a, const Film& b) {
+    int differing = 0;
+    for (int y = 0; y < kSpdProtocolSize; ++y) {
+      for (int x = 0; x < kSpdProtocolSize; ++x) {
+        differing += std::memcmp(&a.at(x, y), &b.at(x, y), sizeof(Color)) != 0 ? 1 : 0;
+      }
+    }
+    return differing;
+  };
+  Scene points = make_spd_scene("spd:balls?size=1");
+  ASSERT_FALSE(points.lights.empty());
+  EXPECT_EQ(differing_pixels(render_with_seed(points, 1), render_with_seed(points, 2)), 0);
+
+  Scene area = points;
+  area.lights[0].kind = Light::Kind::kSphere;
+  area.lights[0].radius = 0.5f;
+  area.lights[0].samples = 4;
+  ASSERT_FALSE(WhittedIntegrator::is_single_sample(area.lights[0]));
+  const Film first = render_with_seed(area, 1);
+  EXPECT_EQ(differing_pixels(first, render_with_seed(area, 1)), 0);  // the same seed, the same bits
+  EXPECT_GT(differing_pixels(first, render_with_seed(area, 2)), 100);
 }
 
 }  // namespace
