@@ -111,11 +111,6 @@ std::optional<SurfaceTangents> surface_tangents(const Geometry& geometry, std::u
   return SurfaceTangents{(e1 * dv2 - e2 * dv1) * inv, (e2 * du1 - e1 * du2) * inv};
 }
 
-float surface_offset(Vec3 position) { return 1e-4f * std::max(1.f, max_component(abs(position))); }
-
-Vec3 offset_origin(Vec3 p, Vec3 n, Vec3 dir) {
-  const float eps = surface_offset(p);
-  return dot(dir, n) >= 0.f ? p + n * eps : p - n * eps;
-}
+Vec3 offset_origin(Vec3 p, Vec3 n, Vec3 dir) { return offset_origins(p, n).toward(dir, n); }
 
 }  // namespace raylab

@@ -36,6 +36,10 @@ void PrimaryPacketTracer::trace(std::span<const Ray> rays, std::span<const std::
     m_ctx.stats.count(RayKind::kPrimary, found);
     if (found) m_surfaces[i] = surface_at(scene, m_rays[i], m_hits[i]);
   }
+  // Once per hit: for every light's shadow ray and for shading.
+  for (std::size_t i = 0; i < n; ++i) {
+    if (m_hits[i].valid()) m_points[i] = WhittedIntegrator::shading_point(m_surfaces[i], m_ctx.shadow_facing);
+  }
 
   const std::size_t light_count = scene.lights.size();
   // Only the answers: a sample is read only where its answer is decided.
@@ -49,7 +53,7 @@ void PrimaryPacketTracer::trace(std::span<const Ray> rays, std::span<const std::
     }
     Pcg32 rng(seeds[i]);
     const std::span<const DecidedShadow> answers(m_answers.data() + i * light_count, light_count);
-    out[i] = handed_on(WhittedIntegrator::shade(m_ctx, m_rays[i], m_surfaces[i], 1, rng, answers));
+    out[i] = handed_on(WhittedIntegrator::shade(m_ctx, m_rays[i], m_surfaces[i], m_points[i], 1, rng, answers));
   }
 }
 
@@ -59,7 +63,7 @@ void PrimaryPacketTracer::trace_shadows(std::size_t light, std::size_t lanes) {
   std::size_t count = 0;
   for (std::size_t i = 0; i < lanes; ++i) {
     if (!m_hits[i].valid()) continue;
-    if (!WhittedIntegrator::single_sample_shadow_ray(l, m_surfaces[i], m_ctx.shadow_facing, m_shadow_rays[count],
+    if (!WhittedIntegrator::single_sample_shadow_ray(l, m_points[i], m_shadow_rays[count],
                                                      m_answers[i * light_count + light].sample)) {
       continue;
     }

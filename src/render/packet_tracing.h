@@ -58,6 +58,7 @@ class PrimaryPacketTracer {
   std::array<Ray, kPacketSize> m_rays;
   std::array<Hit, kPacketSize> m_hits;
   std::array<SurfaceInteraction, kPacketSize> m_surfaces;
+  std::array<ShadingPoint, kPacketSize> m_points;  // m_surfaces as light sampling sees them
   std::array<Ray, kPacketSize> m_shadow_rays;
   std::array<std::uint8_t, kPacketSize> m_shadow_lane;  // lane of each gathered shadow ray
   std::array<std::uint8_t, kPacketSize> m_blocked;

@@ -40,22 +40,6 @@ int sample_grid(const Light& light) {
   return std::max(1, static_cast<int>(std::lround(std::sqrt(static_cast<float>(std::max(1, light.samples))))));
 }
 
-// The point being shaded, as light sampling sees it.
-struct ShadingPoint {
-  Vec3 p;   // position
-  Vec3 n;   // shading normal, toward the arriving ray
-  Vec3 ng;  // geometric normal, toward the arriving ray
-  // The normals rule 10 holds against each light: n and ng, or for ShadowFacing::kOutward the
-  // primitive's own (turned back where the ray arrived from behind).
-  Vec3 rule_n, rule_ng;
-};
-
-ShadingPoint shading_point(const SurfaceInteraction& si, ShadowFacing facing) {
-  const bool turn = facing == ShadowFacing::kOutward && !si.front_face;
-  const Vec3 n = si.shading_normal, ng = si.geometric_normal;
-  return {si.position, n, ng, turn ? -n : n, turn ? -ng : ng};
-}
-
 // Sample (sx, sy) of the `grid` x `grid` stratification of `light` seen from `at`: fills `ls`
 // and the shadow ray toward it. Returns false when no shadow ray is cast (no distance to the
 // sample, or the surface faces away by rule 10). Draws two numbers from `rng` when
@@ -92,7 +76,7 @@ bool sample_light(const Light& light, int grid, int sx, int sy, const ShadingPoi
   }
   // Only surfaces that face the light cast a shadow ray (SPD testing procedure, rule 10).
   if (dot(at.rule_n, ls.wi) <= 0.f || dot(at.rule_ng, ls.wi) <= 0.f) return false;
-  shadow.origin = offset_origin(p, at.ng, ls.wi);
+  shadow.origin = at.origin_toward(ls.wi);
   shadow.direction = ls.wi;
   shadow.tmin = 0.f;
   shadow.tmax = std::isfinite(ls.distance) ? ls.distance * (1.f - kShadowShorten) : INFINITY;
@@ -139,9 +123,15 @@ Color WhittedIntegrator::background(const RenderSettings& s, Vec3 dir) {
 
 bool WhittedIntegrator::is_single_sample(const Light& light) { return sample_grid(light) == 1; }
 
-bool WhittedIntegrator::single_sample_shadow_ray(const Light& light, const SurfaceInteraction& si, ShadowFacing facing,
-                                                 Ray& shadow, LightSample& sample) {
-  return sample_light(light, 1, 0, 0, shading_point(si, facing), nullptr, sample, shadow);
+ShadingPoint WhittedIntegrator::shading_point(const SurfaceInteraction& si, ShadowFacing facing) {
+  const bool turn = facing == ShadowFacing::kOutward && !si.front_face;
+  const Vec3 p = si.position, n = si.shading_normal, ng = si.geometric_normal;
+  return {p, n, ng, turn ? -n : n, turn ? -ng : ng, offset_origins(p, ng)};
+}
+
+bool WhittedIntegrator::single_sample_shadow_ray(const Light& light, const ShadingPoint& at, Ray& shadow,
+                                                 LightSample& sample) {
+  return sample_light(light, 1, 0, 0, at, nullptr, sample, shadow);
 }
 
 Color WhittedIntegrator::radiance(const TraceContext& ctx, const Ray& ray, SampleSource& samples,
@@ -156,16 +146,17 @@ Color WhittedIntegrator::trace(const TraceContext& ctx, Ray ray, int depth, RayK
       ctx.count_traversal ? ctx.accel.intersect_counted(ray, hit, ctx.stats.traversal) : ctx.accel.intersect(ray, hit);
   ctx.stats.count(kind, found);
   if (!found) return background(ctx.scene.settings, ray.direction);
-  return shade(ctx, ray, surface_at(ctx.scene, ray, hit), depth, rng, {}, feature);
+  const SurfaceInteraction si = surface_at(ctx.scene, ray, hit);
+  return shade(ctx, ray, si, shading_point(si, ctx.shadow_facing), depth, rng, {}, feature);
 }
 
-Color WhittedIntegrator::shade(const TraceContext& ctx, const Ray& ray, const SurfaceInteraction& si, int depth,
-                               Pcg32& rng, std::span<const DecidedShadow> shadows, PrimaryFeature* feature) {
+Color WhittedIntegrator::shade(const TraceContext& ctx, const Ray& ray, const SurfaceInteraction& si,
+                               const ShadingPoint& at, int depth, Pcg32& rng, std::span<const DecidedShadow> shadows,
+                               PrimaryFeature* feature) {
   const Scene& scene = ctx.scene;
   const Material& m = scene.materials[scene.objects[si.object_id].material];
   const Vec3 d = normalize(ray.direction);
   const Vec3 n = si.shading_normal;
-  const Vec3 ng = si.geometric_normal;
   const Vec3 view = -d;
   const Color base = diffuse_color(m, si.u, si.v);
   if (feature) {
@@ -174,7 +165,6 @@ Color WhittedIntegrator::shade(const TraceContext& ctx, const Ray& ray, const Su
   }
 
   Color result = m.emission + scene.settings.ambient * base * m.kd;
-  const ShadingPoint at = shading_point(si, ctx.shadow_facing);
   static constexpr DecidedShadow kUndecided{};
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
     const DecidedShadow& decided = shadows.empty() ? kUndecided : shadows[l];
@@ -209,13 +199,13 @@ Color WhittedIntegrator::shade(const TraceContext& ctx, const Ray& ray, const Su
   if (spawn_reflection) {
     Ray r;
     r.direction = reflect(d, n);
-    r.origin = offset_origin(si.position, ng, r.direction);
+    r.origin = at.origin_toward(r.direction);
     result += trace(ctx, r, depth + 1, RayKind::kReflection, rng) * reflect_weight;
   }
   if (spawn_refraction) {
     Ray r;
     r.direction = normalize(refracted);
-    r.origin = offset_origin(si.position, ng, r.direction);
+    r.origin = at.origin_toward(r.direction);
     result += trace(ctx, r, depth + 1, RayKind::kRefraction, rng) * refract_weight;
   }
   return result;

@@ -2,6 +2,7 @@
 /// \file
 /// Surface data at a hit, computed once the closest hit is known (never during traversal).
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 
@@ -38,7 +39,23 @@ SurfaceInteraction surface_at(const Geometry& geometry, const Ray& ray, const Hi
 
 /// Offset along the normal that moves a spawned ray's origin off the surface: relative to the
 /// magnitude of the position so that scenes at any scale are handled (float ulp ~ 1.2e-7).
-float surface_offset(Vec3 position);
+inline float surface_offset(Vec3 position) { return 1e-4f * std::max(1.f, max_component(abs(position))); }
+
+/// The two origins of the rays leaving a surface point: moved off it along its normal `n`, to
+/// `n`'s side and to the other. Made once per hit when it spawns several rays (shading).
+struct OffsetOrigins {
+  Vec3 above;  ///< for directions on n's side (dot(dir, n) >= 0)
+  Vec3 below;  ///< for the others
+
+  /// The origin of a ray leaving in direction `dir`; `n` is the normal these were made with.
+  Vec3 toward(Vec3 dir, Vec3 n) const { return dot(dir, n) >= 0.f ? above : below; }
+};
+
+/// The two origins of rays leaving the surface at `p` with normal `n`.
+inline OffsetOrigins offset_origins(Vec3 p, Vec3 n) {
+  const float eps = surface_offset(p);
+  return {p + n * eps, p - n * eps};
+}
 
 /// Origin for a ray leaving the surface at `p` towards the side of `n` that `dir` points to.
 Vec3 offset_origin(Vec3 p, Vec3 n, Vec3 dir);

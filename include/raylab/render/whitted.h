@@ -35,6 +35,23 @@ struct DecidedShadow {
   LightSample sample{};                        ///< single_sample_shadow_ray's sample
 };
 
+/// A surface point as light sampling sees it: where shadow rays start and the normals that
+/// decide whether they are cast. Made once per hit (WhittedIntegrator::shading_point) and used
+/// for every light and every ray the hit spawns.
+struct ShadingPoint {
+  Vec3 p;   ///< position
+  Vec3 n;   ///< shading normal, toward the arriving ray
+  Vec3 ng;  ///< geometric normal, toward the arriving ray
+  /// The normals the SPD procedure's rule 10 holds against each light: n and ng, or for
+  /// ShadowFacing::kOutward the primitive's own (turned back where the ray arrived from behind).
+  Vec3 rule_n, rule_ng;
+  /// offset_origins(p, ng): the origins of every ray leaving the hit.
+  OffsetOrigins origins;
+
+  /// offset_origin(p, ng, dir), without computing the offset again.
+  Vec3 origin_toward(Vec3 dir) const { return origins.toward(dir, ng); }
+};
+
 /// Whitted-style recursive ray tracer.
 ///  - Depth: a ray at depth `max_depth` is the last; secondary rays start at depth 2.
 ///  - Shadow rays are cast only when the surface faces the light (N.L > 0), N chosen by
@@ -73,18 +90,23 @@ class WhittedIntegrator final : public Integrator {
   /// single-sample light, and is given only where single_sample_shadow_ray returned true (with
   /// the sample it gave). trace() is exactly count + intersect + this, so both give the same
   /// bits.
-  static Color shade(const TraceContext& ctx, const Ray& ray, const SurfaceInteraction& si, int depth, Pcg32& rng,
-                     std::span<const DecidedShadow> shadows = {}, PrimaryFeature* feature = nullptr);
+  /// `at` is shading_point(si, ctx.shadow_facing), made by the caller, which may have used it to
+  /// cast the decided shadow rays.
+  static Color shade(const TraceContext& ctx, const Ray& ray, const SurfaceInteraction& si, const ShadingPoint& at,
+                     int depth, Pcg32& rng, std::span<const DecidedShadow> shadows = {},
+                     PrimaryFeature* feature = nullptr);
 
   /// True when shading toward `light` casts one shadow ray at a fixed position and draws no random
   /// numbers: point and directional lights, and area lights whose `samples` round to a 1x1 grid.
   static bool is_single_sample(const Light& light);
 
-  /// The shadow ray shading casts toward single-sample `light` from `si`, in `shadow`, and the
+  /// Hit `si` as light sampling sees it under the `facing` rule.
+  static ShadingPoint shading_point(const SurfaceInteraction& si, ShadowFacing facing);
+
+  /// The shadow ray shading casts toward single-sample `light` from `at`, in `shadow`, and the
   /// light sample it is cast for, in `sample`; false when it casts none (the surface faces away
-  /// from the light by the `facing` rule, or sits on it).
-  static bool single_sample_shadow_ray(const Light& light, const SurfaceInteraction& si, ShadowFacing facing,
-                                       Ray& shadow, LightSample& sample);
+  /// from the light by the rule `at` was made under, or sits on it).
+  static bool single_sample_shadow_ray(const Light& light, const ShadingPoint& at, Ray& shadow, LightSample& sample);
 
   /// The background seen by a ray leaving in direction `dir`.
   static Color background(const RenderSettings& s, Vec3 dir);
