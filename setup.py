@@ -48,8 +48,14 @@ def pybind11_cmake_dir():
     return pybind11.get_cmake_dir()
 
 
-# What CMakeBuild lays beside the extension, relative to the package folder.
-BESIDE_EXTENSION = ("_build.py", "lib/libraylab.so.0", "lib/libraylab_dist.so.0", "bin/raylab")
+# What CMakeBuild lays beside the extension: its path in the package, from its path in the CMake
+# build folder (the libraries by their soname links, which the copy follows to the files).
+BESIDE_EXTENSION = {
+    "_build.py": "python/raylab/_build.py",
+    "lib/libraylab.so.0": "lib/libraylab.so.0",
+    "lib/libraylab_dist.so.0": "lib/libraylab_dist.so.0",
+    "bin/raylab": "bin/raylab",
+}
 
 
 class CMakeBuild(build_ext):
@@ -104,13 +110,9 @@ class CMakeBuild(build_ext):
             raise RuntimeError(f"expected one extension module in {build_dir}/python/raylab, found {built}")
         package.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built[0], extension)
-        shutil.copyfile(build_dir / "python" / "raylab" / "_build.py", package / "_build.py")
-        (package / "lib").mkdir(exist_ok=True)
-        for library in ("libraylab.so.0", "libraylab_dist.so.0"):
-            # copyfile follows the soname link to the versioned file.
-            shutil.copyfile(build_dir / "lib" / library, package / "lib" / library)
-        (package / "bin").mkdir(exist_ok=True)
-        shutil.copy2(build_dir / "bin" / "raylab", package / "bin" / "raylab")
+        for name, in_build in BESIDE_EXTENSION.items():
+            (package / name).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(build_dir / in_build, package / name)  # keeps the command executable
 
 
 setup(
