@@ -1,8 +1,10 @@
 """The instruction-set check that runs before the extension is imported (raylab/_cpu_check.py)."""
 
+import subprocess
+import sys
+
 import pytest
 
-import raylab
 from raylab import _build, _cpu_check
 
 V2_FLAGS = "fpu sse sse2 ssse3 sse4_1 sse4_2 popcnt cx16"
@@ -42,7 +44,21 @@ def test_unreadable_cpuinfo_blocks_nothing(tmp_path):
     assert _cpu_check.missing_features("x86-64-v4", tmp_path / "absent") == []
 
 
-def test_this_package_passes_its_own_check():
-    # The package imported, so the check let it through: it must agree when asked again.
-    assert _cpu_check.missing_features(_build.ARCH) == []
-    assert raylab.__version__
+def test_the_package_runs_the_check_before_the_extension():
+    # A check that refuses (a stand-in for a CPU without the build's features) must stop the
+    # import with its ImportError before the compiled module is loaded.
+    script = (
+        "import sys, types\n"
+        "stub = types.ModuleType('raylab._cpu_check')\n"
+        "def refuse(arch):\n"
+        "    raise ImportError('refused for ' + arch)\n"
+        "stub.require_cpu = refuse\n"
+        "sys.modules['raylab._cpu_check'] = stub\n"
+        "try:\n"
+        "    import raylab\n"
+        "except ImportError as error:\n"
+        "    print(error)\n"
+        "    print('extension loaded' if 'raylab._raylab' in sys.modules else 'extension not loaded')\n"
+    )
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True).stdout
+    assert out.splitlines() == [f"refused for {_build.ARCH}", "extension not loaded"], out
