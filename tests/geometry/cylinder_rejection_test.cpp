@@ -1,8 +1,9 @@
 // The float rejection in front of the cylinder test (cylinder_surely_missed) may only turn away
 // rays the double-precision test misses: intersect_cylinder must give intersect_cylinder_exact's
 // answers bit for bit, on random rays and on the hardest ones, lines that pass the axis at the
-// radius to within a few parts in a million. And it must actually reject most rays that pass
-// beside, or it buys nothing.
+// radius to within a few parts in a million, and rays that leave the surface itself (as
+// reflected and shadow rays do). And it must actually reject most rays that pass beside, or it
+// buys nothing.
 
 #include <gtest/gtest.h>
 
@@ -108,6 +109,38 @@ TEST(CylinderRejection, LinesGrazingTheRadiusGetTheExactAnswers) {
     }
   }
   EXPECT_GT(tried, 20000);
+}
+
+// Rays leaving a point of the surface, moved off it by relative amounts from 1e-2 down to 1e-9
+// (below float's resolution) to either side, in every direction, from tmin 0, from a negative
+// tmin and from a positive one: the rejection must never turn away a ray the double test hits
+// (the ones that cross the cylinder, or start inside it, or from before the origin).
+TEST(CylinderRejection, RaysLeavingTheSurfaceGetTheExactAnswers) {
+  Pcg32 rng(45);
+  int hits = 0, misses = 0;
+  for (const Cylinder& c : shapes()) {
+    const CylinderFrame f = cylinder_frame(c);
+    const Vec3 axis = c.apex - c.base;
+    const Vec3 w = normalize(axis);
+    for (int i = 0; i < 20000; ++i) {
+      const float height = rng.next_float();
+      Vec3 across = cross(w, random_unit(rng));
+      if (length(across) < 1e-3f) continue;
+      across = normalize(across);
+      const float radius = c.base_radius + (c.apex_radius - c.base_radius) * height;
+      const float offset = (rng.next_float() < 0.5f ? 1.f : -1.f) * std::pow(10.f, -2.f - 7.f * rng.next_float());
+      const Vec3 origin = c.base + axis * height + across * (radius * (1.f + offset));
+      const Vec3 dir = random_unit(rng) * (0.25f + 4.f * rng.next_float());
+      const float tmin = i % 8 == 0 ? -0.5f : (i % 8 == 1 ? 1e-3f : 0.f);
+      const Ray ray{origin, tmin, dir};
+      const Answer e = exact(f, ray);
+      ASSERT_TRUE(same(filtered(f, ray), e)) << "shape " << c.base.x << " ray " << i << " offset " << offset;
+      (e.hit ? hits : misses) += 1;
+    }
+  }
+  // Both answers occur often: the cases reach the rays that re-enter and those that leave.
+  EXPECT_GT(hits, 10000);
+  EXPECT_GT(misses, 10000);
 }
 
 TEST(CylinderRejection, DegenerateRaysAreLeftToTheExactTest) {
