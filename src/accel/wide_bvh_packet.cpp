@@ -222,9 +222,10 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
     shape_rays[g] = RayLanes<kRayLanes>::load(origin[0] + o, origin[1] + o, origin[2] + o, direction[0] + o,
                                               direction[1] + o, direction[2] + o);
   }
-  // The watertight triangle test's per-ray constants, made when the packet first reaches a
-  // triangle or a primitive tested through the Geometry (which may take them): packets that miss
-  // the scene, or meet only spheres and cylinders, never pay for them.
+  // The watertight triangle test's per-ray constants for the whole packet, made when it first
+  // reaches a leaf with triangles: packets that miss the scene, or meet only spheres and
+  // cylinders, never pay for them. A ray tested on its own before that (the single-ray walk,
+  // a leaf's other kinds, which the Geometry may test with them) makes its own: tri_ray.
   bool same_axes = false;  // rays that share the watertight test's axis permutation
   bool triangles_ready = false;
   // Out of line: inlined into the leaf test it cost more than it saved (callgrind, SPD tree
