@@ -247,7 +247,9 @@ void WideBvh<W>::trace_packet_octant(Ray* rays, Hit* hits, std::uint8_t* occlude
     if (!triangles_ready) make_triangle_rays();
   };
   // Ray i's constants alone, for a ray tested on its own before the packet's are made: the same
-  // values (WatertightRay of the same ray) without the other fifteen.
+  // values (WatertightRay of the same ray) without the other fifteen. Made again at each call:
+  // keeping those made in a mask cost more than it saved (callgrind, SPD tree 1,071.8 M
+  // instructions against 1,071.0 M, rings 3,299.4 M against 3,297.7 M).
   auto tri_ray = [&](int i) { return triangles_ready ? tri_rays[i] : WatertightRay(rays[i]); };
 
   // Bit mask of the lanes of group g that enter child c of `node` within their own
