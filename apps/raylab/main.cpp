@@ -14,12 +14,15 @@
 #include "isa_option.h"
 #include "parse_errors.h"
 #include "raylab/core/error.h"
+#include "raylab/core/heap_policy.h"
 #include "raylab/core/isa.h"
 #include "raylab/core/terminal.h"
 #include "raylab/dist/launcher.h"
 #include "raylab/version.h"
 
 int main(int argc, char** argv) {
+  // One render allocates and frees large buffers in turn: reusing them spares fresh pages.
+  raylab::reuse_freed_memory();
   // A write past the file-size limit (ulimit -f) then fails with EFBIG, which the atomic writer
   // reports and cleans up after, instead of SIGXFSZ killing the process and leaving a temporary.
   std::signal(SIGXFSZ, SIG_IGN);
