@@ -41,7 +41,8 @@ got=$(cd "$prefix/include" && find . -type f -o -type l | sed 's|^\./||' | sort)
 while read -r private; do
   [ ! -e "$prefix/include/raylab/${private#src/}" ] || fail "private header $private was installed"
 done < <(cd "$source" && find src -name '*.h')
-# Beside the headers: the two libraries with their SONAME links, the package files, the program.
+# Beside the headers: the two libraries with their SONAME links, the MPI module where MPI was
+# found, the package files, the program.
 others=$(cd "$prefix" && find . -type f -o -type l | sed 's|^\./||' | grep -v '^include/raylab/' | sort)
 expected_others=$(
   for lib in raylab raylab_dist; do
@@ -51,6 +52,8 @@ expected_others=$(
     echo "$libdir/cmake/raylab/$f.cmake"
   done
   echo bin/raylab
+  # The MPI module beside the libraries, which libraylab_dist loads from its own folder.
+  [ ! -e "$build/$libdir/libraylab_mpi.so" ] || echo "$libdir/libraylab_mpi.so"
   if [ -n "$pydir" ]; then
     for f in __init__.py __init__.pyi py.typed _build.py _cpu_check.py; do echo "$pydir/raylab/$f"; done
     (cd "$build/python/raylab" && ls _raylab*.so | sed "s|^|$pydir/raylab/|")

@@ -1,11 +1,19 @@
-#include "raylab/dist/mpi_channel.h"
+// The MPI module (libraylab_mpi): MPI's channel and session, loaded by MpiSession only for a run
+// under an MPI launcher (mpi_backend.h).
 
 #include <mpi.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <list>
+#include <memory>
+#include <optional>
 #include <stdexcept>
+#include <string>
 #include <thread>
+#include <vector>
+
+#include "mpi_backend.h"
 
 namespace raylab::dist {
 namespace {
@@ -81,39 +89,46 @@ class MpiChannel final : public Channel {
   std::list<Pending> m_sending;  // a list: MPI holds pointers into each buffer until done
 };
 
-}  // namespace
+// MPI initialised for the life of the object; one thread makes MPI calls, the one that made it.
+class MpiRun final : public MpiBackend {
+ public:
+  MpiRun() {
+    int provided = 0;
+    if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
+      throw std::runtime_error("MPI failed to start");
+    }
+    // A failing call returns its error here instead of ending the job unexplained.
+    MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
+    m_channel = std::make_unique<MpiChannel>();
+  }
 
-struct MpiSession::State {
-  std::unique_ptr<MpiChannel> channel;
+  ~MpiRun() override {
+    m_channel.reset();
+    MPI_Finalize();
+  }
+
+  Channel& channel() override { return *m_channel; }
+
+  std::string host() const override {
+    char name[MPI_MAX_PROCESSOR_NAME] = {};
+    int length = 0;
+    MPI_Get_processor_name(name, &length);
+    return std::string(name, static_cast<std::size_t>(length));
+  }
+
+  [[noreturn]] void abort(int code) override {
+    MPI_Abort(MPI_COMM_WORLD, code);
+    std::abort();  // (MPI_Abort does not return)
+  }
+
+ private:
+  std::unique_ptr<MpiChannel> m_channel;
 };
 
-MpiSession::MpiSession() : m_state(std::make_unique<State>()) {
-  int provided = 0;
-  if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
-    throw std::runtime_error("MPI failed to start");
-  }
-  // A failing call returns its error here instead of ending the job unexplained.
-  MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
-  m_state->channel = std::make_unique<MpiChannel>();
-}
-
-MpiSession::~MpiSession() {
-  m_state->channel.reset();
-  MPI_Finalize();
-}
-
-Channel& MpiSession::channel() { return *m_state->channel; }
-
-std::string MpiSession::host() const {
-  char name[MPI_MAX_PROCESSOR_NAME] = {};
-  int length = 0;
-  MPI_Get_processor_name(name, &length);
-  return std::string(name, static_cast<std::size_t>(length));
-}
-
-void MpiSession::abort(int code) {
-  MPI_Abort(MPI_COMM_WORLD, code);
-  std::abort();  // (MPI_Abort does not return)
-}
-
+}  // namespace
 }  // namespace raylab::dist
+
+/// The module's entry point (mpi_backend.h, kMpiBackendSymbol): the one symbol it exports.
+extern "C" __attribute__((visibility("default"))) raylab::dist::MpiBackend* raylab_mpi_backend() {
+  return new raylab::dist::MpiRun();
+}
