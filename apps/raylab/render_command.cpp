@@ -75,7 +75,7 @@ int run_spd_protocol(RenderSetup& setup, const RenderOptions& options) {
   if (is_spd_source(args.scene)) source = parse_spd_source(args.scene);
   const SpdSource* spd = source ? &*source : nullptr;
 
-  Film film(kSpdProtocolSize, kSpdProtocolSize);
+  Film film(0, 0);  // replaced by the image, which takes over the corners' memory
   const SpdProtocolResult result = render_spd_protocol(setup.scene, *setup.accel, film, options, facing);
   write_image(film, args.output);
   const bool json_stdout = args.json == "-";

@@ -2,10 +2,13 @@
 
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/uio.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <filesystem>
 #include <vector>
@@ -109,6 +112,10 @@ void check_not_an_input(const std::string& path, const std::vector<std::string>&
 }
 
 void write_file_atomically(const std::string& path, std::span<const unsigned char> bytes) {
+  write_pieces_atomically(path, std::span<const std::span<const unsigned char>>(&bytes, 1));
+}
+
+void write_pieces_atomically(const std::string& path, std::span<const std::span<const unsigned char>> pieces) {
   // Found at write time, after the work: an input error (the file system changed, or no check
   // was made before); the probe is left out, as the temporary below is one.
   if (const std::string reason = unwritable_reason(path, false); !reason.empty()) {
@@ -131,14 +138,26 @@ void write_file_atomically(const std::string& path, std::span<const unsigned cha
     ::unlink(temp.c_str());
     throw InputError(path, std::string(what) + ": " + std::strerror(err));
   };
-  std::size_t written = 0;
-  while (written < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+  // Gathered writes, up to IOV_MAX pieces a call; a short write resumes inside its piece.
+  std::vector<iovec> left;
+  left.reserve(pieces.size());
+  for (const std::span<const unsigned char> piece : pieces) {
+    if (!piece.empty()) left.push_back({const_cast<unsigned char*>(piece.data()), piece.size()});
+  }
+  for (std::size_t next = 0; next < left.size();) {
+    const int count = static_cast<int>(std::min<std::size_t>(left.size() - next, IOV_MAX));
+    ssize_t n = ::writev(fd, left.data() + next, count);
     if (n < 0) {
       if (errno == EINTR) continue;
       fail("write failed");
     }
-    written += static_cast<std::size_t>(n);
+    for (; next < left.size() && static_cast<std::size_t>(n) >= left[next].iov_len; ++next) {
+      n -= static_cast<ssize_t>(left[next].iov_len);
+    }
+    if (n > 0) {  // part of piece `next` went out
+      left[next].iov_base = static_cast<unsigned char*>(left[next].iov_base) + n;
+      left[next].iov_len -= static_cast<std::size_t>(n);
+    }
   }
   if (::fchmod(fd, 0644) != 0) fail("cannot set permissions");
   if (::fsync(fd) != 0) fail("cannot flush to disk");

@@ -49,19 +49,35 @@ std::vector<unsigned char> encode_png(const Film& film) {
   return out;
 }
 
-// PFM: a text header, then little-endian float rows from the bottom of the image up.
-std::vector<unsigned char> encode_pfm(const Film& film) {
-  const std::string header = "PF\n" + std::to_string(film.width()) + " " + std::to_string(film.height()) + "\n-1.0\n";
-  // A film row is already the file's row (three floats a pixel, in this machine's little-endian
-  // order): each is copied whole. Appending pixel by pixel cost 36 instructions a pixel more,
-  // 3.6% of the whole process on SPD tetra (callgrind, docs/performance.md).
+// PFM: a text header, then little-endian float rows from the bottom of the image up. A film row
+// is already the file's row (three floats a pixel, in this machine's little-endian order), so the
+// file is the header followed by the film's rows, last first, each taken whole. (Appending pixel
+// by pixel cost 36 instructions a pixel more, 3.6% of the whole process on SPD tetra: callgrind,
+// docs/performance.md.)
+std::string pfm_header(const Film& film) {
+  return "PF\n" + std::to_string(film.width()) + " " + std::to_string(film.height()) + "\n-1.0\n";
+}
+
+// The file's bytes in order: `header` (pfm_header(film)), then the rows; they point into both.
+std::vector<std::span<const unsigned char>> pfm_pieces(const Film& film, const std::string& header) {
   static_assert(sizeof(Color) == 3 * sizeof(float) && std::is_trivially_copyable_v<Color>);
   const std::size_t row_bytes = std::size_t(film.width()) * sizeof(Color);
-  std::vector<unsigned char> out(header.size() + row_bytes * std::size_t(film.height()));
-  std::memcpy(out.data(), header.data(), header.size());
-  unsigned char* row = out.data() + header.size();
-  if (row_bytes == 0) return out;  // an empty film has no row to take the address of
-  for (int y = film.height() - 1; y >= 0; --y, row += row_bytes) std::memcpy(row, &film.at(0, y), row_bytes);
+  std::vector<std::span<const unsigned char>> pieces;
+  pieces.reserve(std::size_t(film.height()) + 1);
+  pieces.emplace_back(reinterpret_cast<const unsigned char*>(header.data()), header.size());
+  if (row_bytes == 0) return pieces;  // an empty film has no row to take the address of
+  for (int y = film.height() - 1; y >= 0; --y) {
+    pieces.emplace_back(reinterpret_cast<const unsigned char*>(&film.at(0, y)), row_bytes);
+  }
+  return pieces;
+}
+
+std::vector<unsigned char> encode_pfm(const Film& film) {
+  const std::string header = pfm_header(film);
+  std::vector<unsigned char> out;
+  out.reserve(header.size() + std::size_t(film.width()) * std::size_t(film.height()) * sizeof(Color));
+  for (const std::span<const unsigned char> piece : pfm_pieces(film, header))
+    out.insert(out.end(), piece.begin(), piece.end());
   return out;
 }
 
@@ -211,7 +227,16 @@ void write_image(const Film& film, const std::string& path) { write_image(film, 
 
 void write_image(const Film& film, const std::string& path, std::span<const ImageLayer> layers) {
   check_image_extension(path);
-  const std::vector<unsigned char> bytes = encode_image(film, lowercase_extension(path), layers);
+  const std::string extension = lowercase_extension(path);
+  if (extension == ".pfm") {
+    // Straight from the film's rows: a copy of the image would take as many fresh pages as the
+    // film, each a costly fault on a virtual machine (docs/performance.md, "Page faults").
+    check_layers(film, layers);
+    const std::string header = pfm_header(film);
+    write_pieces_atomically(path, pfm_pieces(film, header));
+    return;
+  }
+  const std::vector<unsigned char> bytes = encode_image(film, extension, layers);
   write_file_atomically(path, bytes);
 }
 

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,8 @@
 #include "../test_paths.h"
 #include "raylab/core/error.h"
 #include "raylab/io/atomic_file.h"
+#include "raylab/io/image_io.h"
+#include "raylab/render/film.h"
 
 namespace raylab {
 namespace {
@@ -72,6 +75,39 @@ TEST_F(AtomicWrite, ARenderWhoseImageCannotBeWrittenKeepsThePreviousImage) {
   EXPECT_NE(err.find("File too large"), std::string::npos) << err;
   EXPECT_EQ(read_text(image), previous);
   EXPECT_EQ(entries(out()), std::vector<std::string>{"render.pfm"});
+}
+
+// Pieces go out in order, where they lie: more of them than one gathered write takes (IOV_MAX,
+// 1024 on Linux), empty ones among them, and a large one.
+TEST_F(AtomicWrite, PiecesAreWrittenInOrder) {
+  std::vector<std::string> texts;
+  for (int i = 0; i < 3000; ++i) texts.push_back(i % 7 == 0 ? std::string() : std::to_string(i) + ",");
+  texts.push_back(std::string(1 << 20, 'z'));
+  std::vector<std::span<const unsigned char>> pieces;
+  std::string want;
+  for (const std::string& t : texts) {
+    pieces.emplace_back(reinterpret_cast<const unsigned char*>(t.data()), t.size());
+    want += t;
+  }
+  const std::string target = out_file("pieces.bin");
+  write_pieces_atomically(target, pieces);
+  EXPECT_EQ(read_text(target), want);
+  EXPECT_EQ(entries(out()), std::vector<std::string>{"pieces.bin"});
+}
+
+// A PFM goes out from the film's rows, not through encode_image: the two give the same bytes.
+TEST_F(AtomicWrite, APfmWrittenFromTheFilmIsItsEncoding) {
+  Film film(7, 5);
+  for (int y = 0; y < film.height(); ++y) {
+    for (int x = 0; x < film.width(); ++x) film.at(x, y) = {0.5f * x, 0.25f * y, x == y ? -1.f : 3.f};
+  }
+  const std::string target = out_file("image.pfm");
+  write_image(film, target);
+  const std::vector<unsigned char> encoded = encode_image(film, ".pfm");
+  EXPECT_EQ(read_text(target), std::string(encoded.begin(), encoded.end()));
+  write_image(Film(0, 0), target);  // an empty film: the header alone
+  const std::vector<unsigned char> empty = encode_image(Film(0, 0), ".pfm");
+  EXPECT_EQ(read_text(target), std::string(empty.begin(), empty.end()));
 }
 
 }  // namespace

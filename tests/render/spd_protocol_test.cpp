@@ -6,9 +6,11 @@
 #include <cstring>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "raylab/accel/factory.h"
 #include "raylab/accel/two_level.h"
+#include "raylab/render/camera.h"
 #include "raylab/render/spd_protocol.h"
 #include "raylab/render/whitted.h"
 #include "raylab/scene/spd.h"
@@ -122,11 +124,45 @@ TEST(SpdProtocolImage, PixelsAreTheAverageOfTheirFourCorners) {
   // A one-sphere scene: the corner rays at the image's outer corners lie on the field of view.
   Scene scene = make_spd_scene("spd:balls?size=1");
   const auto accel = make_accelerator("bvh", scene.geometry);
-  Film film(kSpdProtocolSize, kSpdProtocolSize);
-  const SpdProtocolResult r = render_spd_protocol(scene, *accel, film);
+  Film film(0, 0);  // replaced by the image, whatever its size
+  RenderOptions options;
+  options.threads = 2;
+  const SpdProtocolResult r = render_spd_protocol(scene, *accel, film, options);
   EXPECT_EQ(scene.settings.width, 512);
   EXPECT_EQ(scene.settings.max_depth, 5);
   EXPECT_EQ(r.counts.primary, 513u * 513u);
+  ASSERT_EQ(film.width(), kSpdProtocolSize);
+  ASSERT_EQ(film.height(), kSpdProtocolSize);
+
+  // The corners traced one by one, as a single ray through the Whitted integrator, and each
+  // pixel of some rows (the first, the last, the middle and a few more) held to the average of
+  // its four, bit for bit: the image is averaged in place over the corners' memory.
+  CameraSpec spec = scene.camera;
+  spec.fov_span = CameraSpec::FovSpan::kImageEdges;
+  const Camera camera(spec, kSpdProtocolSize, kSpdProtocolSize);
+  RenderStats stats;
+  const TraceContext ctx{scene, *accel, stats};
+  const auto corner = [&](int x, int y) {
+    Pcg32 rng(0);  // point lights draw no numbers
+    return WhittedIntegrator::trace(ctx, camera.generate(static_cast<float>(x), static_cast<float>(y)), 1,
+                                    RayKind::kPrimary, rng);
+  };
+  int differing = 0, hit_pixels = 0;
+  for (int y : {0, 1, 130, 255, 256, 383, 510, 511}) {
+    std::vector<Color> top(kSpdProtocolSize + 1), bottom(kSpdProtocolSize + 1);
+    for (int x = 0; x <= kSpdProtocolSize; ++x) {
+      top[x] = corner(x, y);
+      bottom[x] = corner(x, y + 1);
+    }
+    for (int x = 0; x < kSpdProtocolSize; ++x) {
+      const Color want = (top[x] + top[x + 1] + bottom[x] + bottom[x + 1]) * 0.25f;
+      const Color got = film.at(x, y);
+      differing += std::memcmp(&want, &got, sizeof(Color)) != 0 ? 1 : 0;
+      hit_pixels += want != WhittedIntegrator::background(scene.settings, Vec3{0, 0, 1}) ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(differing, 0);
+  EXPECT_GT(hit_pixels, 100);  // the rows cross the sphere, not only the background
 }
 
 // Each corner's generator is seeded (from the render's seed and the corner) only when a light

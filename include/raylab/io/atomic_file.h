@@ -14,6 +14,10 @@ namespace raylab {
 /// untouched, and InputError says why (missing folder, no permission, disk full).
 void write_file_atomically(const std::string& path, std::span<const unsigned char> bytes);
 
+/// As write_file_atomically(path, bytes) for the bytes of `pieces` one after the other, written
+/// where they lie (an image's rows straight from its film) rather than first copied together.
+void write_pieces_atomically(const std::string& path, std::span<const std::span<const unsigned char>> pieces);
+
 /// Writes `text` to `path` atomically, as write_file_atomically does with bytes.
 void write_text_atomically(const std::string& path, std::string_view text);
 

@@ -2,6 +2,8 @@
 /// \file
 /// The image being rendered: linear RGB per pixel.
 
+#include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "raylab/core/vec3.h"
@@ -13,6 +15,14 @@ class Film {
  public:
   /// A black image.
   Film(int width, int height) : m_width(width), m_height(height), m_pixels(std::size_t(width) * height) {}
+  /// The image whose pixels, row-major from the top row, are `pixels` (taken over, not copied);
+  /// throws std::invalid_argument unless it holds width x height of them.
+  Film(int width, int height, std::vector<Color> pixels)
+      : m_width(width), m_height(height), m_pixels(std::move(pixels)) {
+    if (width < 0 || height < 0 || m_pixels.size() != std::size_t(width) * std::size_t(height)) {
+      throw std::invalid_argument("Film: the pixels are not width x height");
+    }
+  }
 
   int width() const { return m_width; }
   int height() const { return m_height; }

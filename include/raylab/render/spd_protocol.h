@@ -63,9 +63,11 @@ std::string_view spd_facing_name(ShadowFacing facing);
 /// Image size the procedure prescribes.
 inline constexpr int kSpdProtocolSize = 512;
 
-/// Renders `scene` by the SPD testing procedure into `film` (kSpdProtocolSize squared): one eye
-/// ray through each pixel corner, (512 + 1)^2 rays, a pixel being the average of its four
-/// corners; ray trees 5 deep with no adaptive cutoff. The outermost corner rays lie on the
+/// Renders `scene` by the SPD testing procedure and replaces `film` with the image
+/// (kSpdProtocolSize squared, whatever size `film` had): one eye ray through each pixel corner,
+/// (512 + 1)^2 rays, a pixel being the average of its four corners; ray trees 5 deep with no
+/// adaptive cutoff. The image takes over the corners' memory, so a caller that passes an empty
+/// film (Film(0, 0)) allocates no pixels of its own. The outermost corner rays lie on the
 /// camera's field of view (NFF's angle spans the outermost sample rows, which are here the
 /// corners). Sets `scene.settings` to the procedure's size and depth first. `facing` is the
 /// reading of rule 10 (which normal must face a light for a shadow ray to be cast).
