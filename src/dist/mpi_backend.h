@@ -3,8 +3,8 @@
 /// Internal to src/dist: what the MPI module (libraylab_mpi, mpi_module.cpp) gives MpiSession.
 /// MPI's libraries are loaded only by a run under an MPI launcher: linked into libraylab_dist,
 /// they were loaded (and relocated) at the start of every raylab process, about 1.3 ms on the
-/// Intel Xeon and 3 ms on the AMD EPYC Zen 5 machine (docs/performance.md, "MPI loaded only
-/// for MPI runs").
+/// Intel Xeon and 3 ms on the AMD EPYC Zen 5 machine (docs/performance.md, "Page faults on a
+/// virtual machine").
 
 #include <string>
 
