@@ -13,6 +13,8 @@ install(FILES ${PROJECT_BINARY_DIR}/include/raylab/version.h DESTINATION ${CMAKE
 # The include folder comes with raylab::raylab (its INSTALL_INTERFACE), and with it to raylab::dist.
 install(TARGETS raylab raylab_dist EXPORT raylabTargets LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS raylab_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The EXR module, which libraylab loads from its own folder for the first EXR file.
+install(TARGETS raylab_exr LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 # The MPI module, which libraylab_dist loads from its own folder for runs under MPI.
 if(TARGET raylab_mpi)
   install(TARGETS raylab_mpi LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})

@@ -62,7 +62,7 @@ wheel, version, *build_paths = sys.argv[1:]
 suffix = sysconfig.get_config_var("EXT_SUFFIX")
 info = f"raylab-{version}.dist-info"
 package = ["__init__.py", "__init__.pyi", "py.typed", "_build.py", "_command.py", "_cpu_check.py",
-           f"_raylab{suffix}", "lib/libraylab.so.0", "lib/libraylab_dist.so.0", "bin/raylab"]
+           f"_raylab{suffix}", "lib/libraylab.so.0", "lib/libraylab_dist.so.0", "lib/libraylab_exr.so", "bin/raylab"]
 expected = {f"raylab/{name}" for name in package}
 expected |= {f"{info}/{name}" for name in ("METADATA", "WHEEL", "RECORD", "entry_points.txt", "top_level.txt")}
 with zipfile.ZipFile(wheel) as archive:
@@ -90,7 +90,7 @@ EOF
 # The run paths are relative to the files themselves ($ORIGIN): none names this machine's folders.
 mkdir "$tmp/unpacked"
 "$python" -m zipfile -e "$wheel" "$tmp/unpacked"
-for elf in "$tmp"/unpacked/raylab/_raylab*.so "$tmp"/unpacked/raylab/lib/*.so.0 "$tmp"/unpacked/raylab/bin/raylab; do
+for elf in "$tmp"/unpacked/raylab/_raylab*.so "$tmp"/unpacked/raylab/lib/*.so* "$tmp"/unpacked/raylab/bin/raylab; do
   runpath=$(readelf -d "$elf" | sed -n 's/.*(RUNPATH).*\[\(.*\)\]/\1/p')
   [[ $runpath == \$ORIGIN* && $runpath != *:* ]] || fail "$elf has run path '$runpath', not one relative to \$ORIGIN"
 done
