@@ -104,6 +104,4 @@ constexpr ExrCodec kCodec{encode, read, read_channels};
 }  // namespace raylab
 
 /// The module's entry point (exr_codec.h, kExrCodecSymbol): the one symbol it exports.
-extern "C" __attribute__((visibility("default"))) const raylab::ExrCodec* raylab_exr_codec() {
-  return &raylab::kCodec;
-}
+extern "C" __attribute__((visibility("default"))) const raylab::ExrCodec* raylab_exr_codec() { return &raylab::kCodec; }
