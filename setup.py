@@ -6,7 +6,7 @@ The package in the wheel:
     raylab/_build.py                                           how it was built (CMake writes it)
     raylab/_raylab.<abi>.so                                    the extension, run path $ORIGIN/lib
     raylab/lib/libraylab.so.0, libraylab_dist.so.0             the libraries, by their sonames
-    raylab/lib/libraylab_exr.so                                the EXR module libraylab loads
+    raylab/lib/libraylab_exr.so, libraylab_embree.so           the modules libraylab loads
     raylab/bin/raylab                                          the command, run path $ORIGIN/../lib
 A wheel holds no symbolic links, so each library is shipped once, under the name the loader
 looks for. The C++ dependencies (TBB, OpenEXR, fmt, Embree) are the system's shared libraries.
@@ -56,6 +56,7 @@ BESIDE_EXTENSION = {
     "lib/libraylab.so.0": "lib/libraylab.so.0",
     "lib/libraylab_dist.so.0": "lib/libraylab_dist.so.0",
     "lib/libraylab_exr.so": "lib/libraylab_exr.so",
+    "lib/libraylab_embree.so": "lib/libraylab_embree.so",
     "bin/raylab": "bin/raylab",
 }
 

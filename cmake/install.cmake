@@ -15,6 +15,10 @@ install(TARGETS raylab raylab_dist EXPORT raylabTargets LIBRARY DESTINATION ${CM
 install(TARGETS raylab_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The EXR module, which libraylab loads from its own folder for the first EXR file.
 install(TARGETS raylab_exr LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# The Embree module, which libraylab loads from its own folder for Embree scenes.
+if(TARGET raylab_embree)
+  install(TARGETS raylab_embree LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+endif()
 # The MPI module, which libraylab_dist loads from its own folder for runs under MPI.
 if(TARGET raylab_mpi)
   install(TARGETS raylab_mpi LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})

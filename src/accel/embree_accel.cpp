@@ -1,5 +1,7 @@
 #include "raylab/accel/embree_accel.h"
 
+#include "embree_backend.h"
+
 #include "raylab/accel/brute_force.h"
 #include "raylab/core/error.h"
 #include "raylab/core/stopwatch.h"
@@ -430,18 +432,9 @@ AccelInfo EmbreeAccel::info() const {
 
 }  // namespace
 
-bool embree_available() { return true; }
-
-std::unique_ptr<Accelerator> make_embree_accelerator(const Geometry& geometry, std::span<const std::uint32_t> ids) {
+std::unique_ptr<Accelerator> make_embree_accelerator_here(const Geometry& geometry,
+                                                          std::span<const std::uint32_t> ids) {
   return std::make_unique<EmbreeAccel>(geometry, ids);
-}
-
-#else  // built without Embree
-
-bool embree_available() { return false; }
-
-std::unique_ptr<Accelerator> make_embree_accelerator(const Geometry&, std::span<const std::uint32_t>) {
-  throw UsageError("raylab was built without Embree 3 (install libembree-dev and reconfigure)");
 }
 
 #endif

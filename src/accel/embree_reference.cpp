@@ -1,4 +1,5 @@
 #include "raylab/accel/embree_reference.h"
+#include "embree_backend.h"
 
 #include "raylab/core/error.h"
 #include "raylab/core/float_neighbour.h"
@@ -150,7 +151,35 @@ RTCBounds merged(const RTCBounds& a, const RTCBounds& b) {
 
 }  // namespace
 
-struct EmbreeReference::State {
+// EmbreeReference's work, in the module (embree_backend.h).
+class EmbreeRun final : public EmbreeReferenceBackend {
+ public:
+  EmbreeRun(const Geometry& geometry, const std::string& isa);
+  ~EmbreeRun() override;
+  double rebuild() override;
+  std::size_t scene_bytes() const override;
+  std::size_t user_primitive_count() const override;
+  void build_robust() override;
+  void intersect1(std::span<const Ray> rays, std::span<Hit> hits, bool robust) const override;
+  void occluded1(std::span<const Ray> rays, std::span<std::uint8_t> occluded, bool robust) const override;
+  void prepare(std::span<const Ray> rays, bool packets) override;
+  void reset_prepared(std::size_t begin, std::size_t end) const override;
+  void intersect1_prepared(std::size_t begin, std::size_t end) const override;
+  void occluded1_prepared(std::size_t begin, std::size_t end) const override;
+  void intersect16_prepared(std::size_t begin, std::size_t end) const override;
+  void occluded16_prepared(std::size_t begin, std::size_t end) const override;
+  void prepared_hits(std::span<Hit> hits) const override;
+  void prepared_occluded(std::span<std::uint8_t> occluded) const override;
+  void intersect16(std::span<const Ray> rays, std::span<Hit> hits) const override;
+  void occluded16(std::span<const Ray> rays, std::span<std::uint8_t> occluded) const override;
+  double binary_sah_cost(const BvhConfig& config) const override;
+
+ private:
+  struct State;
+  std::unique_ptr<State> m;
+};
+
+struct EmbreeRun::State {
   const Geometry* geometry = nullptr;
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
@@ -214,9 +243,7 @@ struct EmbreeReference::State {
   }
 };
 
-bool embree_reference_available() { return true; }
-
-EmbreeReference::EmbreeReference(const Geometry& geometry, const std::string& isa) : m(std::make_unique<State>()) {
+EmbreeRun::EmbreeRun(const Geometry& geometry, const std::string& isa) : m(std::make_unique<State>()) {
   static_assert(sizeof(Triangle) == 9 * sizeof(float), "the shared vertex buffer needs packed triangles");
   if (!geometry.groups.empty()) throw std::runtime_error("EmbreeReference: groups are not supported");
   m->geometry = &geometry;
@@ -235,13 +262,13 @@ EmbreeReference::EmbreeReference(const Geometry& geometry, const std::string& is
   rebuild();
 }
 
-EmbreeReference::~EmbreeReference() {
+EmbreeRun::~EmbreeRun() {
   if (m->scene) rtcReleaseScene(m->scene);
   if (m->robust) rtcReleaseScene(m->robust);
   rtcReleaseDevice(m->device);
 }
 
-double EmbreeReference::rebuild() {
+double EmbreeRun::rebuild() {
   if (m->scene) rtcReleaseScene(m->scene);
   m->scene = nullptr;
   const long long before = m->allocated.load();  // after the release: only this build counts
@@ -252,15 +279,15 @@ double EmbreeReference::rebuild() {
   return seconds;
 }
 
-std::size_t EmbreeReference::scene_bytes() const { return static_cast<std::size_t>(std::max(0ll, m->scene_bytes)); }
+std::size_t EmbreeRun::scene_bytes() const { return static_cast<std::size_t>(std::max(0ll, m->scene_bytes)); }
 
-std::size_t EmbreeReference::user_primitive_count() const { return m->user_count; }
+std::size_t EmbreeRun::user_primitive_count() const { return m->user_count; }
 
-void EmbreeReference::build_robust() {
+void EmbreeRun::build_robust() {
   if (!m->robust) m->robust = m->build(RTC_SCENE_FLAG_ROBUST);
 }
 
-void EmbreeReference::intersect1(std::span<const Ray> rays, std::span<Hit> hits, bool robust) const {
+void EmbreeRun::intersect1(std::span<const Ray> rays, std::span<Hit> hits, bool robust) const {
   RTCScene scene = robust ? m->robust : m->scene;
   if (!scene) throw std::logic_error("EmbreeReference: build_robust() was not called");
   RTCIntersectContext context;
@@ -275,7 +302,7 @@ void EmbreeReference::intersect1(std::span<const Ray> rays, std::span<Hit> hits,
   }
 }
 
-void EmbreeReference::occluded1(std::span<const Ray> rays, std::span<std::uint8_t> occluded, bool robust) const {
+void EmbreeRun::occluded1(std::span<const Ray> rays, std::span<std::uint8_t> occluded, bool robust) const {
   RTCScene scene = robust ? m->robust : m->scene;
   if (!scene) throw std::logic_error("EmbreeReference: build_robust() was not called");
   RTCIntersectContext context;
@@ -327,7 +354,7 @@ void for_each_packet16(std::span<const Ray> rays, RaysOf rays_of, Trace trace) {
 
 }  // namespace
 
-void EmbreeReference::prepare(std::span<const Ray> rays, bool packets) {
+void EmbreeRun::prepare(std::span<const Ray> rays, bool packets) {
   m->prepared.clear(), m->work.clear(), m->prepared16.clear(), m->work16.clear(), m->valid16.clear();
   if (packets) {
     for (std::size_t b = 0; b < rays.size(); b += 16) {
@@ -348,7 +375,7 @@ void EmbreeReference::prepare(std::span<const Ray> rays, bool packets) {
   m->work = m->prepared;
 }
 
-void EmbreeReference::reset_prepared(std::size_t begin, std::size_t end) const {
+void EmbreeRun::reset_prepared(std::size_t begin, std::size_t end) const {
   if (!m->prepared16.empty()) {
     std::copy(m->prepared16.begin() + static_cast<std::ptrdiff_t>(begin / 16),
               m->prepared16.begin() + static_cast<std::ptrdiff_t>((end + 15) / 16),
@@ -360,19 +387,19 @@ void EmbreeReference::reset_prepared(std::size_t begin, std::size_t end) const {
             m->work.begin() + static_cast<std::ptrdiff_t>(begin));
 }
 
-void EmbreeReference::intersect1_prepared(std::size_t begin, std::size_t end) const {
+void EmbreeRun::intersect1_prepared(std::size_t begin, std::size_t end) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   for (std::size_t i = begin; i < end; ++i) rtcIntersect1(m->scene, &context, &m->work[i]);
 }
 
-void EmbreeReference::occluded1_prepared(std::size_t begin, std::size_t end) const {
+void EmbreeRun::occluded1_prepared(std::size_t begin, std::size_t end) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   for (std::size_t i = begin; i < end; ++i) rtcOccluded1(m->scene, &context, &m->work[i].ray);
 }
 
-void EmbreeReference::intersect16_prepared(std::size_t begin, std::size_t end) const {
+void EmbreeRun::intersect16_prepared(std::size_t begin, std::size_t end) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
@@ -381,7 +408,7 @@ void EmbreeReference::intersect16_prepared(std::size_t begin, std::size_t end) c
   }
 }
 
-void EmbreeReference::occluded16_prepared(std::size_t begin, std::size_t end) const {
+void EmbreeRun::occluded16_prepared(std::size_t begin, std::size_t end) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
@@ -390,7 +417,7 @@ void EmbreeReference::occluded16_prepared(std::size_t begin, std::size_t end) co
   }
 }
 
-void EmbreeReference::prepared_hits(std::span<Hit> hits) const {
+void EmbreeRun::prepared_hits(std::span<Hit> hits) const {
   for (std::size_t i = 0; i < hits.size(); ++i) {
     if (!m->work16.empty()) {
       const RTCRayHit16& rh = m->work16[i / 16];
@@ -403,14 +430,14 @@ void EmbreeReference::prepared_hits(std::span<Hit> hits) const {
   }
 }
 
-void EmbreeReference::prepared_occluded(std::span<std::uint8_t> occluded) const {
+void EmbreeRun::prepared_occluded(std::span<std::uint8_t> occluded) const {
   for (std::size_t i = 0; i < occluded.size(); ++i) {
     const float tfar = m->work16.empty() ? m->work[i].ray.tfar : m->work16[i / 16].ray.tfar[i % 16];
     occluded[i] = tfar == -kInf ? 1 : 0;
   }
 }
 
-void EmbreeReference::intersect16(std::span<const Ray> rays, std::span<Hit> hits) const {
+void EmbreeRun::intersect16(std::span<const Ray> rays, std::span<Hit> hits) const {
   for_each_packet16<RTCRayHit16>(
       rays, [](RTCRayHit16& rh) -> RTCRay16& { return rh.ray; },
       [&](RTCIntersectContext& context, std::size_t b, std::size_t n, int(&valid)[16], RTCRayHit16& rh) {
@@ -422,7 +449,7 @@ void EmbreeReference::intersect16(std::span<const Ray> rays, std::span<Hit> hits
       });
 }
 
-void EmbreeReference::occluded16(std::span<const Ray> rays, std::span<std::uint8_t> occluded) const {
+void EmbreeRun::occluded16(std::span<const Ray> rays, std::span<std::uint8_t> occluded) const {
   for_each_packet16<RTCRay16>(
       rays, [](RTCRay16& r) -> RTCRay16& { return r; },
       [&](RTCIntersectContext& context, std::size_t b, std::size_t n, int(&valid)[16], RTCRay16& r) {
@@ -431,7 +458,7 @@ void EmbreeReference::occluded16(std::span<const Ray> rays, std::span<std::uint8
       });
 }
 
-double EmbreeReference::binary_sah_cost(const BvhConfig& config) const {
+double EmbreeRun::binary_sah_cost(const BvhConfig& config) const {
   const Geometry& g = *m->geometry;
   std::vector<RTCBuildPrimitive> prims;
   prims.reserve(g.size());
@@ -493,33 +520,9 @@ double EmbreeReference::binary_sah_cost(const BvhConfig& config) const {
   return sah_cost(tree, config);
 }
 
-#else  // built without Embree
-
-struct EmbreeReference::State {};
-
-bool embree_reference_available() { return false; }
-
-EmbreeReference::EmbreeReference(const Geometry&, const std::string&) {
-  throw UsageError("raylab was built without Embree 3 (install libembree-dev and reconfigure)");
+EmbreeReferenceBackend* make_embree_reference_here(const Geometry& geometry, const std::string& isa) {
+  return new EmbreeRun(geometry, isa);
 }
-EmbreeReference::~EmbreeReference() = default;
-double EmbreeReference::rebuild() { return 0.0; }
-std::size_t EmbreeReference::scene_bytes() const { return 0; }
-std::size_t EmbreeReference::user_primitive_count() const { return 0; }
-void EmbreeReference::build_robust() {}
-void EmbreeReference::intersect1(std::span<const Ray>, std::span<Hit>, bool) const {}
-void EmbreeReference::occluded1(std::span<const Ray>, std::span<std::uint8_t>, bool) const {}
-void EmbreeReference::intersect16(std::span<const Ray>, std::span<Hit>) const {}
-void EmbreeReference::prepare(std::span<const Ray>, bool) {}
-void EmbreeReference::intersect16_prepared(std::size_t, std::size_t) const {}
-void EmbreeReference::occluded16_prepared(std::size_t, std::size_t) const {}
-void EmbreeReference::reset_prepared(std::size_t, std::size_t) const {}
-void EmbreeReference::intersect1_prepared(std::size_t, std::size_t) const {}
-void EmbreeReference::occluded1_prepared(std::size_t, std::size_t) const {}
-void EmbreeReference::prepared_hits(std::span<Hit>) const {}
-void EmbreeReference::prepared_occluded(std::span<std::uint8_t>) const {}
-void EmbreeReference::occluded16(std::span<const Ray>, std::span<std::uint8_t>) const {}
-double EmbreeReference::binary_sah_cost(const BvhConfig&) const { return 0.0; }
 
 #endif
 

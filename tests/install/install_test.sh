@@ -54,6 +54,7 @@ expected_others=$(
   echo bin/raylab
   # The modules beside the libraries, which libraylab and libraylab_dist load from their folder.
   echo "$libdir/libraylab_exr.so"
+  [ ! -e "$build/$libdir/libraylab_embree.so" ] || echo "$libdir/libraylab_embree.so"
   [ ! -e "$build/$libdir/libraylab_mpi.so" ] || echo "$libdir/libraylab_mpi.so"
   if [ -n "$pydir" ]; then
     for f in __init__.py __init__.pyi py.typed _build.py _cpu_check.py; do echo "$pydir/raylab/$f"; done

@@ -62,7 +62,8 @@ wheel, version, *build_paths = sys.argv[1:]
 suffix = sysconfig.get_config_var("EXT_SUFFIX")
 info = f"raylab-{version}.dist-info"
 package = ["__init__.py", "__init__.pyi", "py.typed", "_build.py", "_command.py", "_cpu_check.py",
-           f"_raylab{suffix}", "lib/libraylab.so.0", "lib/libraylab_dist.so.0", "lib/libraylab_exr.so", "bin/raylab"]
+           f"_raylab{suffix}", "lib/libraylab.so.0", "lib/libraylab_dist.so.0", "lib/libraylab_exr.so",
+           "lib/libraylab_embree.so", "bin/raylab"]
 expected = {f"raylab/{name}" for name in package}
 expected |= {f"{info}/{name}" for name in ("METADATA", "WHEEL", "RECORD", "entry_points.txt", "top_level.txt")}
 with zipfile.ZipFile(wheel) as archive:
