@@ -25,24 +25,40 @@ namespace raylab {
 class EmbreeReferenceBackend {
  public:
   virtual ~EmbreeReferenceBackend() = default;
-  virtual double rebuild() = 0;                                                              ///< see EmbreeReference
-  virtual std::size_t scene_bytes() const = 0;                                               ///< see EmbreeReference
-  virtual std::size_t user_primitive_count() const = 0;                                      ///< see EmbreeReference
-  virtual void build_robust() = 0;                                                           ///< see EmbreeReference
-  virtual void intersect1(std::span<const Ray> rays, std::span<Hit> hits, bool robust) const = 0;  ///< see EmbreeReference
-  virtual void occluded1(std::span<const Ray> rays, std::span<std::uint8_t> occluded,
-                         bool robust) const = 0;                                             ///< see EmbreeReference
-  virtual void prepare(std::span<const Ray> rays, bool packets) = 0;                         ///< see EmbreeReference
-  virtual void reset_prepared(std::size_t begin, std::size_t end) const = 0;                 ///< see EmbreeReference
-  virtual void intersect1_prepared(std::size_t begin, std::size_t end) const = 0;            ///< see EmbreeReference
-  virtual void occluded1_prepared(std::size_t begin, std::size_t end) const = 0;             ///< see EmbreeReference
-  virtual void intersect16_prepared(std::size_t begin, std::size_t end) const = 0;           ///< see EmbreeReference
-  virtual void occluded16_prepared(std::size_t begin, std::size_t end) const = 0;            ///< see EmbreeReference
-  virtual void prepared_hits(std::span<Hit> hits) const = 0;                                 ///< see EmbreeReference
-  virtual void prepared_occluded(std::span<std::uint8_t> occluded) const = 0;                ///< see EmbreeReference
-  virtual void intersect16(std::span<const Ray> rays, std::span<Hit> hits) const = 0;        ///< see EmbreeReference
-  virtual void occluded16(std::span<const Ray> rays, std::span<std::uint8_t> occluded) const = 0;  ///< see EmbreeReference
-  virtual double binary_sah_cost(const BvhConfig& config) const = 0;                         ///< see EmbreeReference
+  /// EmbreeReference::rebuild.
+  virtual double rebuild() = 0;
+  /// EmbreeReference::scene_bytes.
+  virtual std::size_t scene_bytes() const = 0;
+  /// EmbreeReference::user_primitive_count.
+  virtual std::size_t user_primitive_count() const = 0;
+  /// EmbreeReference::build_robust.
+  virtual void build_robust() = 0;
+  /// EmbreeReference::intersect1.
+  virtual void intersect1(std::span<const Ray> rays, std::span<Hit> hits, bool robust) const = 0;
+  /// EmbreeReference::occluded1.
+  virtual void occluded1(std::span<const Ray> rays, std::span<std::uint8_t> occluded, bool robust) const = 0;
+  /// EmbreeReference::prepare.
+  virtual void prepare(std::span<const Ray> rays, bool packets) = 0;
+  /// EmbreeReference::reset_prepared.
+  virtual void reset_prepared(std::size_t begin, std::size_t end) const = 0;
+  /// EmbreeReference::intersect1_prepared.
+  virtual void intersect1_prepared(std::size_t begin, std::size_t end) const = 0;
+  /// EmbreeReference::occluded1_prepared.
+  virtual void occluded1_prepared(std::size_t begin, std::size_t end) const = 0;
+  /// EmbreeReference::intersect16_prepared.
+  virtual void intersect16_prepared(std::size_t begin, std::size_t end) const = 0;
+  /// EmbreeReference::occluded16_prepared.
+  virtual void occluded16_prepared(std::size_t begin, std::size_t end) const = 0;
+  /// EmbreeReference::prepared_hits.
+  virtual void prepared_hits(std::span<Hit> hits) const = 0;
+  /// EmbreeReference::prepared_occluded.
+  virtual void prepared_occluded(std::span<std::uint8_t> occluded) const = 0;
+  /// EmbreeReference::intersect16.
+  virtual void intersect16(std::span<const Ray> rays, std::span<Hit> hits) const = 0;
+  /// EmbreeReference::occluded16.
+  virtual void occluded16(std::span<const Ray> rays, std::span<std::uint8_t> occluded) const = 0;
+  /// EmbreeReference::binary_sah_cost.
+  virtual double binary_sah_cost(const BvhConfig& config) const = 0;
 };
 
 /// The module's entry points.
