@@ -15,29 +15,10 @@
 namespace raylab {
 namespace {
 
-#if defined(RAYLAB_HAVE_EMBREE)
-// The module's entry points, or why there are none: loaded once, whatever the outcome.
-struct LoadedEmbree {
-  const EmbreeEntries* entries = nullptr;
-  std::string error;
-
-  LoadedEmbree() {
-    try {
-      void* entry = sibling_module_symbol(reinterpret_cast<const void*>(&embree_available), kEmbreeModuleFile,
-                                          kEmbreeEntriesSymbol, ModuleScope::kLocal);
-      entries = reinterpret_cast<const EmbreeEntries* (*)()>(entry)();
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
-  }
-};
-#endif
-
 const EmbreeEntries& embree_entries() {
 #if defined(RAYLAB_HAVE_EMBREE)
-  static const LoadedEmbree loaded;  // thread-safe, once
-  if (loaded.entries == nullptr) throw std::runtime_error(loaded.error);
-  return *loaded.entries;
+  return sibling_module_entry<EmbreeEntries>(reinterpret_cast<const void*>(&embree_available), kEmbreeModuleFile,
+                                             kEmbreeEntriesSymbol);
 #else
   throw UsageError("raylab was built without Embree 3 (install libembree-dev and reconfigure)");
 #endif
