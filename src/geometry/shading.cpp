@@ -14,7 +14,8 @@ void spherical_uv(Vec3 n, float& u, float& v) {
 
 }  // namespace
 
-SurfaceInteraction surface_at(const Geometry& geometry, const Ray& ray, const Hit& hit) {
+SurfaceInteraction surface_at(const Geometry& geometry, const Ray& ray, const Hit& hit,
+                              SurfaceCoordinates coordinates) {
   SurfaceInteraction si;
   si.object_id = geometry.object_of(hit.prim_id);
   const ShapeRef ref = geometry.resolve(hit.prim_id);
@@ -47,7 +48,7 @@ SurfaceInteraction surface_at(const Geometry& geometry, const Ray& ray, const Hi
       n_shape = normalize(si.position - s.center);
       // Project back onto the sphere: removes the error of t along the normal.
       si.position = s.center + n_shape * s.radius;
-      spherical_uv(n_shape, si.u, si.v);
+      if (coordinates == SurfaceCoordinates::kCompute) spherical_uv(n_shape, si.u, si.v);
       break;
     }
     case ShapeKind::kCylinder: {

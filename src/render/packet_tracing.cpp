@@ -34,7 +34,7 @@ void PrimaryPacketTracer::trace(std::span<const Ray> rays, std::span<const std::
   for (std::size_t i = 0; i < n; ++i) {
     const bool found = m_hits[i].valid();
     m_ctx.stats.count(RayKind::kPrimary, found);
-    if (found) m_surfaces[i] = surface_at(scene, m_rays[i], m_hits[i]);
+    if (found) m_surfaces[i] = shading_surface_at(scene, m_rays[i], m_hits[i]);
   }
   // Once per hit: for every light's shadow ray and for shading.
   for (std::size_t i = 0; i < n; ++i) {

@@ -138,7 +138,7 @@ Color PathIntegrator::radiance(const TraceContext& ctx, const Ray& camera_ray, S
       break;
     }
 
-    const SurfaceInteraction si = surface_at(scene, ray, hit);
+    const SurfaceInteraction si = shading_surface_at(scene, ray, hit);
     if (feature && vertex == 0) {
       feature->object = static_cast<std::int32_t>(si.object_id);
       feature->normal = si.shading_normal;

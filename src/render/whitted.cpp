@@ -146,7 +146,7 @@ Color WhittedIntegrator::trace(const TraceContext& ctx, Ray ray, int depth, RayK
       ctx.count_traversal ? ctx.accel.intersect_counted(ray, hit, ctx.stats.traversal) : ctx.accel.intersect(ray, hit);
   ctx.stats.count(kind, found);
   if (!found) return background(ctx.scene.settings, ray.direction);
-  const SurfaceInteraction si = surface_at(ctx.scene, ray, hit);
+  const SurfaceInteraction si = shading_surface_at(ctx.scene, ray, hit);
   return shade(ctx, ray, si, shading_point(si, ctx.shadow_facing), depth, rng, {}, feature);
 }
 

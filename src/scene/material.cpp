@@ -88,6 +88,8 @@ MaterialPoint material_at(const Material& m, float u, float v) {
   return p;
 }
 
+bool reads_surface_coordinates(const Material& m) { return m.texture.kind != Texture::Kind::kNone || !m.maps.empty(); }
+
 Color emitted_radiance(const Material& m, float u, float v) {
   const Color e = m.emission * m.emission_strength;
   return m.maps.emission ? e * m.maps.emission->sample(u, v) : e;

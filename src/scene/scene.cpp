@@ -73,9 +73,23 @@ std::uint32_t Scene::object_of(std::uint32_t prim_id) const {
   return inst.first_object + prototypes[inst.prototype].object_of(local);
 }
 
-SurfaceInteraction surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
+namespace {
+
+// surface_at of the scene, the coordinates computed as `coordinates` says (kSkip: only where
+// the hit's material reads them).
+SurfaceInteraction surface_in_scene(const Scene& scene, const Ray& ray, const Hit& hit,
+                                    SurfaceCoordinates coordinates) {
+  // Only a sphere's coordinates cost more than asking the material whether it reads them (the
+  // other shapes' take a few products, a triangle's none); instances' are computed.
+  if (coordinates == SurfaceCoordinates::kSkip) {
+    const Geometry& g = scene.geometry;
+    const bool flat_sphere = hit.prim_id >= g.triangles.size() && hit.prim_id - g.triangles.size() < g.spheres.size();
+    if (!flat_sphere || reads_surface_coordinates(scene.material_of(hit.prim_id))) {
+      coordinates = SurfaceCoordinates::kCompute;
+    }
+  }
   if (hit.prim_id < scene.geometry.size()) {
-    SurfaceInteraction si = surface_at(scene.geometry, ray, hit);
+    SurfaceInteraction si = surface_at(scene.geometry, ray, hit, coordinates);
     const MaterialMaps& maps = scene.materials[scene.objects[si.object_id].material].maps;
     if (maps.changes_normal()) {
       if (const std::optional<SurfaceTangents> tangents = surface_tangents(scene.geometry, hit.prim_id))
@@ -91,7 +105,7 @@ SurfaceInteraction surface_at(const Scene& scene, const Ray& ray, const Hit& hit
   local_ray.direction = inst.to_local.vector(ray.direction);
   Hit local_hit = hit;
   local_hit.prim_id = hit.prim_id - scene.geometry.size() - inst.first_prim_offset;
-  SurfaceInteraction si = surface_at(scene.prototypes[inst.prototype], local_ray, local_hit);
+  SurfaceInteraction si = surface_at(scene.prototypes[inst.prototype], local_ray, local_hit, coordinates);
   si.position = ray.at(hit.t);
   si.geometric_normal = normalize(inst.to_world.normal(si.geometric_normal));
   si.shading_normal = normalize(inst.to_world.normal(si.shading_normal));
@@ -104,6 +118,16 @@ SurfaceInteraction surface_at(const Scene& scene, const Ray& ray, const Hit& hit
     }
   }
   return si;
+}
+
+}  // namespace
+
+SurfaceInteraction surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
+  return surface_in_scene(scene, ray, hit, SurfaceCoordinates::kCompute);
+}
+
+SurfaceInteraction shading_surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
+  return surface_in_scene(scene, ray, hit, SurfaceCoordinates::kSkip);
 }
 
 std::size_t Scene::memory_bytes() const { return scene_memory(*this).used(); }

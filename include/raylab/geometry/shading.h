@@ -34,8 +34,19 @@ struct SurfaceTangents {
 /// cylinders, disks) and for triangles whose texture coordinates have no area.
 std::optional<SurfaceTangents> surface_tangents(const Geometry& geometry, std::uint32_t prim_id);
 
-/// Computes position, normals and surface coordinates for `hit` on `ray`.
-SurfaceInteraction surface_at(const Geometry& geometry, const Ray& ray, const Hit& hit);
+/// Whether surface_at computes a hit's surface coordinates (SurfaceInteraction::u and v).
+enum class SurfaceCoordinates : std::uint8_t {
+  kCompute,  ///< u and v as each shape defines them
+  /// For a caller that will not read them: u = v = 0 where they cost more than the rest of the
+  /// hit, which is on spheres (an arc tangent and an arc cosine); the other shapes' cost a few
+  /// products and are computed all the same.
+  kSkip,
+};
+
+/// Computes position, normals and surface coordinates (as `coordinates` says) for `hit` on
+/// `ray`. The position and normals do not depend on `coordinates`.
+SurfaceInteraction surface_at(const Geometry& geometry, const Ray& ray, const Hit& hit,
+                              SurfaceCoordinates coordinates = SurfaceCoordinates::kCompute);
 
 /// Offset along the normal that moves a spawned ray's origin off the surface: relative to the
 /// magnitude of the position so that scenes at any scale are handled (float ulp ~ 1.2e-7).

@@ -82,6 +82,8 @@ struct MaterialMaps {
 
   /// True when the normal or bump map changes the shading normal.
   bool changes_normal() const { return normal != nullptr || bump != nullptr; }
+  /// True when no map is set.
+  bool empty() const { return !metallic_roughness && !emission && !transmission && !normal && !bump; }
 };
 
 /// The scattering model a material names, as its source gave it. The Whitted integrator shades
@@ -147,5 +149,10 @@ Color emitted_radiance(const Material& m, float u, float v);
 /// The diffuse colour of `m` at surface coordinates (u, v): the material colour, varied by its
 /// texture. An image texture without an image leaves the colour as it is.
 Color diffuse_color(const Material& m, float u, float v);
+
+/// True when shading with `m` reads the surface coordinates (u, v): a texture or a map varies it
+/// over the surface. Where it is false, diffuse_color, material_at and emitted_radiance give the
+/// same at every (u, v).
+bool reads_surface_coordinates(const Material& m);
 
 }  // namespace raylab

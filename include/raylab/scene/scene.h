@@ -90,4 +90,10 @@ struct Scene {
 /// recomputed in the prototype's space and carried back to world space.
 SurfaceInteraction surface_at(const Scene& scene, const Ray& ray, const Hit& hit);
 
+/// surface_at, but a sphere's surface coordinates are computed only where the hit's material
+/// reads them (reads_surface_coordinates), u = v = 0 elsewhere: what the integrators shade
+/// with. An untextured sphere's coordinates (an arc tangent and an arc cosine) cost more than
+/// the rest of its hit; other shapes' cost less than asking the material.
+SurfaceInteraction shading_surface_at(const Scene& scene, const Ray& ray, const Hit& hit);
+
 }  // namespace raylab
