@@ -353,7 +353,7 @@ BvhTree build_bvh(const Geometry& geometry, std::span<const std::uint32_t> ids, 
     return tree;
   }
   const UnorderedBvh built = build_bvh_unordered(geometry, ids, config);
-  relayout_depth_first(built.nodes.get(), built.node_count, built.refs.get(), tree);
+  relayout_depth_first(built.nodes.data(), built.node_count, built.refs.data(), tree);
   return tree;
 }
 
@@ -365,10 +365,10 @@ UnorderedBvh build_bvh_unordered(const Geometry& geometry, std::span<const std::
   const auto capacity = static_cast<std::uint32_t>(n + std::floor(budget * n));
   // Default-initialised (not zeroed): every slot that is read is written first.
   UnorderedBvh built;
-  built.refs.reset(new BuildRef[capacity]);
-  built.nodes.reset(new BvhNode[2 * std::size_t{capacity}]);
-  const Bounds bounds = make_refs(geometry, ids, built.refs.get());
-  built.node_count = Builder(geometry, config, built.refs.get(), built.nodes.get()).build(n, capacity, bounds);
+  built.refs.resize(capacity);
+  built.nodes.resize(2 * std::size_t{capacity});
+  const Bounds bounds = make_refs(geometry, ids, built.refs.data());
+  built.node_count = Builder(geometry, config, built.refs.data(), built.nodes.data()).build(n, capacity, bounds);
   return built;
 }
 

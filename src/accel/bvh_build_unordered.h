@@ -11,6 +11,7 @@
 
 #include "bvh_build_ref.h"
 #include "raylab/accel/bvh.h"
+#include "raylab/core/uninitialized_vector.h"
 #include "raylab/geometry/geometry.h"
 
 namespace raylab {
@@ -19,9 +20,9 @@ namespace raylab {
 /// took them: root at 0, the two children of an interior node side by side at `first` and
 /// `first + 1`. A leaf's references are refs[first, first + count), in leaf order.
 struct UnorderedBvh {
-  std::unique_ptr<BvhNode[]> nodes;
+  UninitializedVector<BvhNode> nodes;  ///< slots for two nodes per reference; [0, node_count) used
   std::uint32_t node_count = 0;
-  std::unique_ptr<bvh_build::BuildRef[]> refs;
+  UninitializedVector<bvh_build::BuildRef> refs;  ///< room for every reference, spatial splits' too
 };
 
 /// Builds the tree over the primitives `ids` (at least one) of `geometry`; `build_bvh` is this

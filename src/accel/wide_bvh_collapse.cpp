@@ -466,9 +466,9 @@ WideBvhTree<W> collapse_to_wide(const BvhTree& tree, const Geometry& geometry) {
 template <int W>
 WideBvhTree<W> collapse_to_wide(const UnorderedBvh& tree, const Geometry& geometry,
                                 std::span<const std::uint32_t> ids) {
-  const bvh_build::BuildRef* refs = tree.refs.get();
+  const bvh_build::BuildRef* refs = tree.refs.data();
   auto prim = [refs](std::size_t i) { return refs[i].id; };
-  const BinarySource<decltype(prim)> source{tree.nodes.get(), tree.node_count, tree.node_count == 0, prim};
+  const BinarySource<decltype(prim)> source{tree.nodes.data(), tree.node_count, tree.node_count == 0, prim};
   return WideCollapser<W, decltype(prim)>(source, geometry, ids).run();
 }
 

@@ -23,9 +23,11 @@ class Writer {
     m_bytes.insert(m_bytes.end(), p, p + sizeof(T));
     return *this;
   }
-  /// Appends a vector of trivially copyable values, preceded by its length.
-  template <class T>
-  Writer& put_vector(const std::vector<T>& values) {
+  /// Appends a vector (a std::vector, whatever its allocator) of trivially copyable values,
+  /// preceded by its length.
+  template <class Vector>
+  Writer& put_vector(const Vector& values) {
+    using T = typename Vector::value_type;
     static_assert(std::is_trivially_copyable_v<T>);
     put<std::uint64_t>(values.size());
     const auto* p = reinterpret_cast<const std::uint8_t*>(values.data());

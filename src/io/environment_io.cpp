@@ -71,7 +71,7 @@ std::shared_ptr<const EnvironmentImage> read_environment_image(const std::string
   auto image = std::make_shared<EnvironmentImage>();
   image->width = film.width();
   image->height = film.height();
-  image->texels = film.pixels();
+  image->texels.assign(film.pixels().begin(), film.pixels().end());
   image->path = path;
   return image;
 }

@@ -61,7 +61,7 @@ SpdProtocolResult render_spd_protocol(Scene& scene, const Accelerator& accel, Fi
   const Camera camera(spec, n, n);
 
   const int corners = n + 1;
-  std::vector<Color> corner(static_cast<std::size_t>(corners) * corners);
+  Film::Pixels corner(static_cast<std::size_t>(corners) * corners);
   tbb::enumerable_thread_specific<RenderStats> thread_stats;
   std::atomic<int> rows_done{0};
   const int threads = usable_threads(options.threads);

@@ -2,18 +2,24 @@
 /// \file
 /// A std::vector whose `resize` leaves new elements of trivial types uninitialised, for large
 /// arrays that parallel code fills right after sizing them (the wide BVH's nodes and triangle
-/// blocks): a plain `resize` would first write every byte on one thread.
+/// blocks): a plain `resize` would first write every byte on one thread. Blocks of
+/// kLargeBlockBytes (1 MiB) or more come in huge pages (large_block.h).
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <new>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "raylab/core/large_block.h"
+
 namespace raylab {
 
 /// std::allocator, except that constructing an element without arguments default-initialises
-/// it (for a trivial type: no write at all) instead of value-initialising it (zeroing).
+/// it (for a trivial type: no write at all) instead of value-initialising it (zeroing), and that
+/// blocks of kLargeBlockBytes or more come from allocate_large_block.
 template <class T>
 class DefaultInitAllocator : public std::allocator<T> {
  public:
@@ -30,6 +36,22 @@ class DefaultInitAllocator : public std::allocator<T> {
     using other = DefaultInitAllocator<U>;
   };
 
+  /// Room for `n` elements: from allocate_large_block when that is kLargeBlockBytes or more.
+  T* allocate(std::size_t n) {
+    if (n >= kLargeElements && n <= SIZE_MAX / sizeof(T)) {
+      return static_cast<T*>(allocate_large_block(n * sizeof(T)));
+    }
+    return std::allocator<T>::allocate(n);
+  }
+  /// Frees what allocate(n) gave.
+  void deallocate(T* p, std::size_t n) noexcept {
+    if (n >= kLargeElements && n <= SIZE_MAX / sizeof(T)) {
+      free_large_block(p, n * sizeof(T));
+    } else {
+      std::allocator<T>::deallocate(p, n);
+    }
+  }
+
   /// Default-initialises an element (for a trivial type this writes nothing).
   template <class U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
@@ -40,6 +62,10 @@ class DefaultInitAllocator : public std::allocator<T> {
   void construct(U* p, Args&&... args) {
     ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
+
+ private:
+  // Elements from which a block is large.
+  static constexpr std::size_t kLargeElements = (kLargeBlockBytes + sizeof(T) - 1) / sizeof(T);
 };
 
 /// Allocators of this family are interchangeable.
