@@ -14,12 +14,6 @@
 #endif
 
 namespace raylab {
-namespace {
-
-// `bytes` rounded up to whole huge pages.
-std::size_t whole_pages(std::size_t bytes) { return (bytes + kHugePageBytes - 1) & ~(kHugePageBytes - 1); }
-
-}  // namespace
 
 #if defined(RAYLAB_LARGE_BLOCKS_FROM_NEW)
 
@@ -30,6 +24,13 @@ void free_large_block(void* block, std::size_t /*bytes*/) noexcept {
 }
 
 #else
+
+namespace {
+
+// `bytes` rounded up to whole huge pages.
+std::size_t whole_pages(std::size_t bytes) { return (bytes + kHugePageBytes - 1) & ~(kHugePageBytes - 1); }
+
+}  // namespace
 
 void* allocate_large_block(std::size_t bytes) {
   if (bytes > SIZE_MAX - 2 * kHugePageBytes) throw std::bad_alloc();
