@@ -75,8 +75,8 @@ std::uint32_t Scene::object_of(std::uint32_t prim_id) const {
 
 namespace {
 
-// surface_at of the scene, the coordinates computed as `coordinates` says (kSkip: only where
-// the hit's material reads them).
+// surface_at of the scene, the coordinates computed as `coordinates` says (kSkip: a sphere's
+// only where the hit's material reads them).
 SurfaceInteraction surface_in_scene(const Scene& scene, const Ray& ray, const Hit& hit,
                                     SurfaceCoordinates coordinates) {
   // Only a sphere's coordinates cost more than asking the material whether it reads them (the
