@@ -1,6 +1,9 @@
 #include "numpy_views.h"
 
+#include <memory>
 #include <string>
+
+#include "raylab/core/large_block.h"
 
 namespace raylab::python {
 
@@ -95,11 +98,34 @@ py::array_t<T, py::array::c_style> matrix(py::handle obj, const char* name, int 
   return out;
 }
 
+namespace {
+
+// A large block that a numpy array's base capsule frees with the array.
+struct LargeBlockOwner {
+  void* block;
+  std::size_t bytes;
+};
+
+}  // namespace
+
 template <class T>
 py::array_t<T> new_array(const std::vector<py::ssize_t>& shape, py::ssize_t trailing) {
   std::vector<py::ssize_t> full = shape;
   if (trailing != 0) full.push_back(trailing);
-  return py::array_t<T>(full);
+  std::size_t bytes = sizeof(T);
+  for (const py::ssize_t extent : full) bytes *= static_cast<std::size_t>(extent);
+  if (bytes < kLargeBlockBytes) return py::array_t<T>(full);
+  // The answers of a large query: each call returns new arrays, and numpy's own memory would be
+  // faulted in 4 KiB at a time every call (a million rays' answers are 8,000 pages).
+  auto kept = std::make_unique<LargeBlockOwner>(LargeBlockOwner{nullptr, bytes});
+  kept->block = allocate_large_block(bytes);
+  LargeBlockOwner* owner = kept.release();
+  const py::capsule base(owner, [](void* p) noexcept {
+    const auto* o = static_cast<LargeBlockOwner*>(p);
+    free_large_block(o->block, o->bytes);
+    delete o;
+  });
+  return py::array_t<T>(full, static_cast<T*>(owner->block), base);
 }
 
 template py::array_t<float, py::array::c_style> matrix<float>(py::handle, const char*, int);

@@ -39,7 +39,9 @@ FloatRows float_rows(py::handle obj, const char* name, int columns);
 template <class T>
 py::array_t<T, py::array::c_style> matrix(py::handle obj, const char* name, int columns);
 
-/// A new array of `shape` followed by `trailing` (when not 0), uninitialised.
+/// A new array of `shape` followed by `trailing` (when not 0), uninitialised. One of
+/// kLargeBlockBytes or more lies in a large block (raylab/core/large_block.h: huge pages), freed
+/// with the array.
 template <class T>
 py::array_t<T> new_array(const std::vector<py::ssize_t>& shape, py::ssize_t trailing = 0);
 
