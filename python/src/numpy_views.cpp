@@ -114,7 +114,7 @@ py::array_t<T> new_array(const std::vector<py::ssize_t>& shape, py::ssize_t trai
   if (trailing != 0) full.push_back(trailing);
   std::size_t bytes = sizeof(T);
   for (const py::ssize_t extent : full) bytes *= static_cast<std::size_t>(extent);
-  if (bytes < kLargeBlockBytes) return py::array_t<T>(full);
+  if (!is_large_block(bytes)) return py::array_t<T>(full);
   // The answers of a large query: each call returns new arrays, and numpy's own memory would be
   // faulted in 4 KiB at a time every call (a million rays' answers are 8,000 pages).
   auto kept = std::make_unique<LargeBlockOwner>(LargeBlockOwner{nullptr, bytes});

@@ -19,6 +19,10 @@ inline constexpr std::size_t kHugePageBytes = std::size_t{2} << 20;
 /// cost less than 256 faults of 4 KiB, and the few large arrays of a render can spare the rest.
 inline constexpr std::size_t kLargeBlockBytes = kHugePageBytes / 2;
 
+/// True when a block of `bytes` is large: the one rule by which every user of large blocks
+/// (DefaultInitAllocator, the Python module's answer arrays) decides.
+constexpr bool is_large_block(std::size_t bytes) { return bytes >= kLargeBlockBytes; }
+
 /// A block of `bytes` (at least kLargeBlockBytes) of uninitialised memory, aligned to kHugePageBytes
 /// and advised to the kernel as huge pages (MADV_HUGEPAGE: used where the kernel's transparent
 /// huge pages are on, ignored elsewhere). Throws std::bad_alloc when there is no memory. Under

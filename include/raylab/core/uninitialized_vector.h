@@ -38,14 +38,12 @@ class DefaultInitAllocator : public std::allocator<T> {
 
   /// Room for `n` elements: from allocate_large_block when that is kLargeBlockBytes or more.
   T* allocate(std::size_t n) {
-    if (n >= kLargeElements && n <= SIZE_MAX / sizeof(T)) {
-      return static_cast<T*>(allocate_large_block(n * sizeof(T)));
-    }
+    if (large(n)) return static_cast<T*>(allocate_large_block(n * sizeof(T)));
     return std::allocator<T>::allocate(n);
   }
   /// Frees what allocate(n) gave.
   void deallocate(T* p, std::size_t n) noexcept {
-    if (n >= kLargeElements && n <= SIZE_MAX / sizeof(T)) {
+    if (large(n)) {
       free_large_block(p, n * sizeof(T));
     } else {
       std::allocator<T>::deallocate(p, n);
@@ -64,8 +62,9 @@ class DefaultInitAllocator : public std::allocator<T> {
   }
 
  private:
-  // Elements from which a block is large.
-  static constexpr std::size_t kLargeElements = (kLargeBlockBytes + sizeof(T) - 1) / sizeof(T);
+  // Whether `n` elements make a large block (not when n * sizeof(T) overflows: std::allocator
+  // refuses those).
+  static bool large(std::size_t n) { return n <= SIZE_MAX / sizeof(T) && is_large_block(n * sizeof(T)); }
 };
 
 /// Allocators of this family are interchangeable.
