@@ -11,15 +11,9 @@
 // dies at exit depends on which sizes it allocated first. Without the hook, LeakSanitizer skips the
 // modules' dynamic TLS blocks; the executable's and libraries' static TLS is still scanned.
 
-#if defined(__SANITIZE_ADDRESS__)
-#define RAYLAB_HAS_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define RAYLAB_HAS_ASAN 1
-#endif
-#endif
+#include "raylab/core/address_sanitizer.h"
 
-#if defined(RAYLAB_HAS_ASAN)
+#if defined(RAYLAB_ADDRESS_SANITIZER)
 /// Read by the AddressSanitizer runtime at start-up, before ASAN_OPTIONS.
 extern "C" const char* __asan_default_options() { return "intercept_tls_get_addr=0"; }
 #endif

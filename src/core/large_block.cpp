@@ -5,17 +5,11 @@
 #include <cstdint>
 #include <new>
 
-#if defined(__SANITIZE_ADDRESS__)
-#define RAYLAB_LARGE_BLOCKS_FROM_NEW 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define RAYLAB_LARGE_BLOCKS_FROM_NEW 1
-#endif
-#endif
+#include "raylab/core/address_sanitizer.h"
 
 namespace raylab {
 
-#if defined(RAYLAB_LARGE_BLOCKS_FROM_NEW)
+#if defined(RAYLAB_ADDRESS_SANITIZER)
 
 void* allocate_large_block(std::size_t bytes) { return ::operator new (bytes, std::align_val_t{kHugePageBytes}); }
 

@@ -114,10 +114,11 @@ TEST_P(IsaKernels, EverySetAgreesWithBruteForceAndWithBaselineBitForBit) {
 
 // Triangles some thousands of units from the world's origin and rays from among them aimed at
 // their corners: a ray grazes the boxes whose corner or edge a vertex lies on, and the origin
-// times the inverse direction is thousands of times the distance to them. The box test's fused
-// form (AVX2, AVX-512) subtracts that product in the end, so an error of one rounding in it is a
-// thousandfold error in the distance unless it is rounded to the safe side; every set must find
-// the hits brute force finds.
+// times the inverse direction is thousands of times the distance to them. A box test in fused
+// form (plane * inverse - origin * inverse in one FMA, as Embree's; measured and not kept,
+// docs/performance.md) subtracts that product last, so one rounding in it is a thousandfold
+// error in the distance unless it is rounded to the safe side: it fails here. Every set must
+// find the hits brute force finds.
 TEST_P(IsaKernels, RaysGrazingCornersFarFromTheWorldOrigin) {
   Sampler s(47);
   const Vec3 centre{3000.f, -5000.f, 4000.f};

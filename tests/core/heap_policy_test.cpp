@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "raylab/core/address_sanitizer.h"
 #include "raylab/core/heap_policy.h"
 
 #if defined(__GLIBC__)
@@ -36,7 +37,7 @@ int reuse_check() {
 }
 
 TEST(HeapPolicy, FreedBlocksStayForTheNextAllocation) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(RAYLAB_ADDRESS_SANITIZER)
   GTEST_SKIP() << "AddressSanitizer's allocator replaces glibc's: mallopt does not reach it";
 #endif
   GTEST_FLAG_SET(death_test_style, "threadsafe");

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "raylab/core/address_sanitizer.h"
 #include "raylab/core/large_block.h"
 #include "raylab/core/uninitialized_vector.h"
 #include "raylab/render/film.h"
@@ -50,7 +51,7 @@ TEST(LargeBlock, IsAlignedToAHugePageAndHoldsWhatIsWritten) {
 }
 
 TEST(LargeBlock, IsAdvisedAsHugePagesAndUnmappedWhenFreed) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(RAYLAB_ADDRESS_SANITIZER)
   GTEST_SKIP() << "under AddressSanitizer large blocks come from operator new, which it watches";
 #endif
   const std::size_t bytes = 3 * kHugePageBytes;
