@@ -100,10 +100,19 @@ py::array_t<T, py::array::c_style> matrix(py::handle obj, const char* name, int 
 
 namespace {
 
-// A large block that a numpy array's base capsule frees with the array.
-struct LargeBlockOwner {
-  void* block;
-  std::size_t bytes;
+// A large block, freed with its owner: a numpy array's base capsule deletes the owner with the
+// array.
+class LargeBlockOwner {
+ public:
+  explicit LargeBlockOwner(std::size_t bytes) : m_block(allocate_large_block(bytes)), m_bytes(bytes) {}
+  ~LargeBlockOwner() { free_large_block(m_block, m_bytes); }
+  LargeBlockOwner(const LargeBlockOwner&) = delete;
+  LargeBlockOwner& operator=(const LargeBlockOwner&) = delete;
+  void* block() const { return m_block; }
+
+ private:
+  void* m_block;
+  std::size_t m_bytes;
 };
 
 }  // namespace
@@ -117,15 +126,12 @@ py::array_t<T> new_array(const std::vector<py::ssize_t>& shape, py::ssize_t trai
   if (!is_large_block(bytes)) return py::array_t<T>(full);
   // The answers of a large query: each call returns new arrays, and numpy's own memory would be
   // faulted in 4 KiB at a time every call (a million rays' answers are 8,000 pages).
-  auto kept = std::make_unique<LargeBlockOwner>(LargeBlockOwner{nullptr, bytes});
-  kept->block = allocate_large_block(bytes);
-  LargeBlockOwner* owner = kept.release();
-  const py::capsule base(owner, [](void* p) noexcept {
-    const auto* o = static_cast<LargeBlockOwner*>(p);
-    free_large_block(o->block, o->bytes);
-    delete o;
-  });
-  return py::array_t<T>(full, static_cast<T*>(owner->block), base);
+  // The owner is released to the capsule only once the capsule exists: if making it throws, the
+  // unique_ptr still frees the block.
+  auto owner = std::make_unique<LargeBlockOwner>(bytes);
+  const py::capsule base(owner.get(), [](void* p) noexcept { delete static_cast<LargeBlockOwner*>(p); });
+  T* const data = static_cast<T*>(owner.release()->block());
+  return py::array_t<T>(full, data, base);
 }
 
 template py::array_t<float, py::array::c_style> matrix<float>(py::handle, const char*, int);

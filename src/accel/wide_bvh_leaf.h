@@ -279,13 +279,12 @@ struct WideBoxRay {
     plane_offsets(std::signbit(ray.direction.z), 2, near_z, far_z);
     // An empty slot (+inf to -inf) gives every ray an entry of +inf and an exit of -inf on each
     // axis, so the slab test refuses it by itself, unless a distance is NaN, which min/max would
-    // drop: (inf - origin) * inverse is NaN only for a zero inverse (an infinite direction
-    // component), a NaN one, or an origin that is not finite. Only such rays pay for masking
-    // the slots (2 loads, a compare and an AND per node: 2-7% of a single ray's time with 16-wide
-    // nodes, docs/performance.md).
+    // drop: (inf - origin) * inverse is NaN only for a zero or NaN inverse (a direction component
+    // that is infinite or NaN; 1 / FLT_MAX is a denormal, not 0) or an origin that is not
+    // finite. Only such rays pay for masking the slots (2 loads, a compare and an AND per node:
+    // 2-7% of a single ray's time with 16-wide nodes, docs/performance.md).
     for (int axis = 0; axis < 3; ++axis) {
-      const float inverse = 1.f / ray.direction[axis];
-      if (inverse == 0.f || std::isnan(inverse) || !std::isfinite(ray.origin[axis])) filter_empty_slots = true;
+      if (!std::isfinite(ray.direction[axis]) || !std::isfinite(ray.origin[axis])) filter_empty_slots = true;
     }
   }
 

@@ -68,6 +68,11 @@ TEST(LargeBlock, VectorsOfAMebibyteOrMoreUseThem) {
   UninitializedVector<float> small(kLargeBlockBytes / sizeof(float) - 1);
   UninitializedVector<float> large(kLargeBlockBytes / sizeof(float));
   EXPECT_TRUE(aligned_to_huge_page(large.data()));
+#if !defined(RAYLAB_ADDRESS_SANITIZER)
+  // One element short of a large block is an ordinary one: no huge-page advice on its memory.
+  EXPECT_EQ(vm_flags_of(small.data()).find(" hg"), std::string::npos) << vm_flags_of(small.data());
+  EXPECT_NE(vm_flags_of(large.data()).find(" hg"), std::string::npos) << vm_flags_of(large.data());
+#endif
   // Growing from a small block to a large one and on keeps every element.
   UninitializedVector<std::uint32_t> grown;
   for (std::uint32_t i = 0; i < 3 * kHugePageBytes / sizeof(std::uint32_t); ++i) grown.push_back(i);
